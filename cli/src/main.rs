@@ -1,0 +1,66 @@
+//! `traction`: batch evaluation of the traction contact models from CSV.
+//!
+//! Every subcommand reads and writes SI units; conversions to GPa, mm or %
+//! happen only where a column name says so. `-` means stdin or stdout.
+#![forbid(unsafe_code)]
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+mod compliance;
+mod error;
+mod fit;
+mod fluid;
+mod hertz;
+mod jt;
+mod kinematics;
+mod table;
+
+use error::CliError;
+
+/// Lubricated rolling traction contact models (report reproduction and batch evaluation).
+#[derive(Debug, Parser)]
+#[command(name = "traction", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Elliptical Hertz contact of two bodies (radii, materials, load or P0).
+    Hertz(hertz::HertzArgs),
+    /// Johnson & Tevaarwerk traction model in the dimensionless J groups.
+    Jt(jt::JtArgs),
+    /// Fit the report's 16- or 32-term correlations to a data set.
+    Fit(fit::FitArgs),
+    /// Evaluate a fluid's slope m and peak traction μ correlations in batch.
+    Fluid(fluid::FluidArgs),
+    /// Contact kinematics: twin-disc rig and general rigid bodies.
+    Kinematics(kinematics::KinematicsArgs),
+    /// Disc compliance: Kalker coefficients and traction-slope conversion.
+    Compliance(compliance::ComplianceArgs),
+}
+
+fn run(cli: Cli) -> Result<(), CliError> {
+    match cli.command {
+        Command::Hertz(a) => hertz::run(a),
+        Command::Jt(a) => jt::run(a),
+        Command::Fit(a) => fit::run(a),
+        Command::Fluid(a) => fluid::run(a),
+        Command::Kinematics(a) => kinematics::run(a),
+        Command::Compliance(a) => compliance::run(a),
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

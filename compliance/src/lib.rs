@@ -1,0 +1,2 @@
+//! traction-compliance (work in progress).
+#![forbid(unsafe_code)]

@@ -1,0 +1,2 @@
+//! traction-fluids (work in progress).
+#![forbid(unsafe_code)]

@@ -1,0 +1,2 @@
+//! traction-hertz (work in progress).
+#![forbid(unsafe_code)]

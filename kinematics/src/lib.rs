@@ -1,0 +1,2 @@
+//! traction-kinematics (work in progress).
+#![forbid(unsafe_code)]

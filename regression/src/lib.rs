@@ -1,0 +1,2 @@
+//! traction-regression (work in progress).
+#![forbid(unsafe_code)]

@@ -1,0 +1,2 @@
+//! traction-rheology (work in progress).
+#![forbid(unsafe_code)]
