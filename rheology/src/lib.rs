@@ -1,2 +1,380 @@
-//! traction-rheology (work in progress).
+//! # traction-rheology: the Johnson & Tevaarwerk (J+T) traction model
+//!
+//! Traction, side force, spin torque and losses of a lubricated elliptical
+//! rolling contact under slip, side slip and spin, computed by integrating
+//! the J+T constitutive law over the Hertzian contact, in the report's
+//! dimensionless groups (NASA TP 1530 = report Appendix IV, ASME 78-Lub-10 =
+//! Appendix V, main text sections 3-0 and 4-0).
+//!
+//! ## Dimensionless groups (the report's names)
+//! * k = b/a, aspect ratio (a along rolling, b across), X = x/a, Y = y/b.
+//! * J1 = Ḡ√(ab)·ΔU/(τ̄hU) = (3π/8)(m/μ)(ΔU/U)√k, slip (App. IV eq. 11).
+//! * J2 = Ḡ√(ab)·ΔV/(τ̄hU) = (3π/8)(m/μ)(ΔV/U)√k, side slip (App. V).
+//! * J3 = Ḡ√(ab)·ω√(ab)/(τ̄hU) = (3π/8)(m/μ)(ω√(ab)/U)√k, spin (App. IV eq. 12).
+//! * ΔX = δ/a, spin-pole offset (App. IV; the report kept it zero).
+//! * J4 = Fx/(μN), J5 = Fy/(μN), J6 = T/(μN√(ab)), J7 = J1·J4 + J2·J5 + J3·J6
+//!   (App. IV eqs. 15–17, App. V eq. 21), loss factor LF = J7/J4 (App. IV eq. 18).
+//! * Z = τ/τ̄, τ̄ = μN/(πab) (App. IV eq. 10); S = (2/3)J1/√k, ε = J1/J3.
+//!
+//! ## Equations
+//! Along a strip at fixed Y (half-width c = √(1−Y²)), from the stress-free
+//! inlet X = −c (App. IV eq. 5) to the outlet X = c (App. IV eq. 13, with the
+//! side-slip term of App. V eqs. 10–11):
+//!
+//! ```text
+//!   dZx/dX = J1/√k − J3·Y              − plastic part
+//!   dZy/dX = J2/√k + J3·(X + ΔX)/k     − plastic part
+//! ```
+//!
+//! The right-hand side without the plastic part is the elastic rate v. The
+//! elastic/perfectly plastic law (App. IV eq. 7, Prandtl–Reuss) keeps
+//! |Z| ≤ L = (3/2)√(1−X²−Y²) (App. IV eq. 8 and the text after it; App. V
+//! eq. 19 prints 2/3, an OCR slip: only 3/2 makes the mean of L over the
+//! ellipse equal to 1, i.e. the peak traction μN). On the limit the stress
+//! turns with θ' = (v·t)/L (t ⟂ Z) while v·n ≥ dL/dX, and unloads elastically
+//! otherwise. Note the printed F̄ of App. IV eq. 13 keeps |Z| constant on the
+//! limit; with a limit that shrinks towards the outlet the consistency
+//! condition must include dL/dX, which is what this crate solves.
+//!
+//! Forces: J4 = (1/π)∫∫Zx dX dY, J5 = (1/π)∫∫Zy dX dY,
+//! J6 = (1/(π√k))∫∫(Zy·X − k·Zx·Y) dX dY.
+//! **J6 prefactor.** App. IV eq. 16 prints (√k/π); with T = ∫(τy·x − τx·y)dA,
+//! x = aX, y = bY, dA = ab dX dY, T/(μN√(ab)) has the prefactor 1/(π√k). Only
+//! the latter satisfies the power balance J7 = J1·J4 + J2·J5 + J3·J6 =
+//! Ḡ(Fx·ΔU + Fy·ΔV + T·ω)/(π τ̄² √(ab) h U) (App. IV eq. 17, App. V eq. 21);
+//! they differ by the factor k (equal for k = 1, which is why it went
+//! unnoticed). This crate uses 1/(π√k); a test checks the balance.
+//!
+//! ## Models
+//! * [`Model::ElasticPlastic`] (default): Ḡ constant, limit pressure
+//!   proportional — the combination the report's printed theory uses: the
+//!   zero-spin closed form App. V eq. 22 (main text eq. 8) is exactly the strip
+//!   integral of this combination, and App. IV recommends it ("if a better fit
+//!   is wanted").
+//! * [`Model::RigidPlastic`]: Z = L·v/|v| (App. IV eq. 14, App. V eq. 14), the
+//!   limit of the above for J's → ∞ at fixed ratios (ε = J1/J3).
+//! * [`Model::Viscoelastic`]: the sinh law (App. V eqs. 3–6) with Deborah
+//!   number D = ηU/(Ḡa) and reference stress Z0 = τ0/τ̄, with the limit L kept
+//!   as a cap; D → ∞ gives the elastic/plastic model exactly (the viscous
+//!   term vanishes), Z0 → ∞ the linear Maxwell fluid. See [`viscoelastic`].
+//! * Closed forms for zero spin: [`closed::slip_traction`] (eq. 22),
+//!   [`closed::combined_slip_traction`] (eq. 23),
+//!   [`closed::rigid_plastic_slip_traction`] (eq. 24).
+//!
+//! ## Assumptions
+//! Hertzian pressure and ellipse, constant film thickness, isothermal, no
+//! stress in the inlet, no roller compliance beyond what Ḡ absorbs.
+//!
+//! ## Symmetries (tested)
+//! * (J1, J2, J3) → −(J1, J2, J3): (J4, J5, J6) change sign (ΔX = 0 or any ΔX).
+//! * Mirror y → −y: (J1, −J2, −J3) gives (J4, −J5, −J6).
+//! * Negative rolling direction (App. VI): reversing the discs reverses U and
+//!   ω together; in the frame that rolls forwards (x' = −x, y' = −y) the spin
+//!   J3 changes sign and ΔV' = ΔV. Mapped back to the lab y-axis with the mirror
+//!   above, the report prints it as the same J3 with J2 → −J2: its "negative
+//!   rolling direction" tables are J5(0, −J2, J3).
+//!
+//! ## Kalker's simplified theory (FASTSIM)
+//! The same elastic/plastic model is FASTSIM with one flexibility
+//! L_K = h/Ḡ (m/Pa) for all directions, creepages ξ = ΔU/U, η = ΔV/U, spin
+//! φ = ω/U (1/m), and the ellipsoidal traction bound
+//! (3/2)·μN/(πab)·√(1−x²/a²−y²/b²) (= μ·P(x,y)). In FASTSIM's own units
+//! (stresses/μP0... ) the J groups are the creepages over the stiffness ratio:
+//! J1 = ξ·√(ab)/(L_K τ̄), J2 = η·√(ab)/(L_K τ̄), J3 = φ·ab/(L_K τ̄), τ̄ = μN/(πab);
+//! conversely ξ = J1·L_K τ̄/√(ab). FASTSIM's forces Fx, Fy and moment Mz map to
+//! J4 = Fx/(μN), J5 = Fy/(μN), J6 = Mz/(μN√(ab)). Sign conventions differ
+//! between codes (FASTSIM usually defines creepage as the rigid slip opposing
+//! the traction); here ΔU > 0 gives J4 > 0.
+//!
+//! ## Accuracy
+//! [`Accuracy`] sets the target absolute error of J4, J5, J6; tests check it
+//! against converged solutions and a second, independent grid method.
+//!
+//! ## Example
+//! ```
+//! use traction_rheology::{Accuracy, Inputs, Model, evaluate};
+//!
+//! // Slip only: the integrator reproduces App. V eq. 22.
+//! let inp = Inputs::new(1.0, 1.5, 0.0, 0.0).unwrap();
+//! let out = evaluate(&inp, Model::ElasticPlastic, Accuracy::new(1e-6).unwrap()).unwrap();
+//! let exact = traction_rheology::closed::slip_traction(1.0, 1.5);
+//! assert!((out.j4 - exact).abs() < 1e-6);
+//! // Spin adds side force and torque; J7 = J1·J4 + J2·J5 + J3·J6 ≥ 0.
+//! let spin = Inputs::new(1.0, 1.5, 0.0, 2.0).unwrap();
+//! let o = evaluate(&spin, Model::ElasticPlastic, Accuracy::default()).unwrap();
+//! assert!(o.j4 < out.j4 && o.j7 >= 0.0);
+//! ```
 #![forbid(unsafe_code)]
+
+pub mod closed;
+mod ep;
+mod quad;
+mod rigid;
+mod visco;
+
+pub use ep::Resolution;
+
+/// Smallest supported aspect ratio k.
+pub const K_MIN: f64 = 0.01;
+/// Largest supported aspect ratio k.
+pub const K_MAX: f64 = 100.0;
+/// Above this max(|J1|, |J2|, |J3|) the elastic lag is below 1e-12 of the
+/// traction and the elastic/plastic model returns the rigid/plastic solution.
+pub const J_RIGID: f64 = 1e12;
+
+/// Errors of this crate; every variant names the quantity and its valid range.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum RheologyError {
+    /// The aspect ratio k is outside [K_MIN, K_MAX] or not finite.
+    #[error("aspect ratio k = {0} is outside the supported range [0.01, 100]")]
+    AspectRatio(f64),
+    /// A J group or the spin-pole offset is not finite.
+    #[error("{name} = {value} must be finite")]
+    NotFinite {
+        /// Which quantity (J1, J2, J3, dX).
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The Deborah number is negative, zero or NaN.
+    #[error("Deborah number D = {0} must be > 0 (use inf for the elastic/plastic limit)")]
+    Deborah(f64),
+    /// The sinh reference stress Z0 = τ0/τ̄ is not positive.
+    #[error("reference stress Z0 = tau0/tau_bar = {0} must be > 0 (inf for a Maxwell fluid)")]
+    ReferenceStress(f64),
+    /// The requested accuracy is outside [1e-9, 0.1].
+    #[error("accuracy tol = {0} is outside the supported range [1e-9, 0.1]")]
+    Tolerance(f64),
+}
+
+/// Inputs in the report's dimensionless groups.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Inputs {
+    /// Aspect ratio k = b/a.
+    pub k: f64,
+    /// Dimensionless slip J1.
+    pub j1: f64,
+    /// Dimensionless side slip J2.
+    pub j2: f64,
+    /// Dimensionless spin J3.
+    pub j3: f64,
+    /// Dimensionless spin-pole offset ΔX = δ/a (App. IV sign: rate J3(X+ΔX)/k).
+    pub dx: f64,
+}
+
+impl Inputs {
+    /// Validated inputs with ΔX = 0.
+    pub fn new(k: f64, j1: f64, j2: f64, j3: f64) -> Result<Self, RheologyError> {
+        Self::with_offset(k, j1, j2, j3, 0.0)
+    }
+
+    /// Validated inputs with a spin-pole offset ΔX.
+    pub fn with_offset(k: f64, j1: f64, j2: f64, j3: f64, dx: f64) -> Result<Self, RheologyError> {
+        let inp = Inputs { k, j1, j2, j3, dx };
+        inp.validate()?;
+        Ok(inp)
+    }
+
+    /// Check k and finiteness (the fields are public, so [`evaluate`] checks again).
+    pub fn validate(&self) -> Result<(), RheologyError> {
+        if !(self.k >= K_MIN && self.k <= K_MAX) {
+            return Err(RheologyError::AspectRatio(self.k));
+        }
+        for (name, value) in [
+            ("J1", self.j1),
+            ("J2", self.j2),
+            ("J3", self.j3),
+            ("dX", self.dx),
+        ] {
+            if !value.is_finite() {
+                return Err(RheologyError::NotFinite { name, value });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Results in the report's dimensionless groups.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outputs {
+    /// Traction along the rolling direction J4 = Fx/(μN).
+    pub j4: f64,
+    /// Side force J5 = Fy/(μN).
+    pub j5: f64,
+    /// Spin torque J6 = T/(μN√(ab)).
+    pub j6: f64,
+    /// Losses J7 = J1·J4 + J2·J5 + J3·J6.
+    pub j7: f64,
+}
+
+impl Outputs {
+    /// Loss factor LF = J7/J4 (App. IV eq. 18); infinite when J4 = 0 and J7 > 0.
+    pub fn loss_factor(&self) -> f64 {
+        self.j7 / self.j4
+    }
+}
+
+/// Which constitutive model to integrate.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[non_exhaustive]
+pub enum Model {
+    /// Elastic/perfectly plastic (Prandtl–Reuss), Ḡ constant, limit
+    /// (3/2)√(1−X²−Y²) — the report's printed theory.
+    #[default]
+    ElasticPlastic,
+    /// Rigid/plastic (Ḡ → ∞): Z = L·v/|v|.
+    RigidPlastic,
+    /// Viscoelastic sinh law with the limit as a cap.
+    Viscoelastic {
+        /// Deborah number D = ηU/(Ḡa) (> 0, `inf` allowed).
+        deborah: f64,
+        /// Sinh reference stress Z0 = τ0/τ̄ (> 0, `inf` = Maxwell fluid).
+        z0: f64,
+    },
+}
+
+/// Accuracy request: the target absolute error of J4, J5 and J6.
+///
+/// Meaning: for every input in the supported range the result is within `tol`
+/// of the converged solution of the same model (verified in the tests
+/// against converged and independent solutions; the elastic/plastic
+/// integrator is fourth order in the step and spectrally convergent in Y away
+/// from the strips where the flow pattern changes, where it is second order).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Accuracy {
+    tol: f64,
+}
+
+impl Default for Accuracy {
+    /// 1e-4, the CLI default.
+    fn default() -> Self {
+        Accuracy { tol: 1e-4 }
+    }
+}
+
+impl Accuracy {
+    /// An accuracy target in [1e-9, 0.1].
+    pub fn new(tol: f64) -> Result<Self, RheologyError> {
+        if !(1e-9..=0.1).contains(&tol) {
+            return Err(RheologyError::Tolerance(tol));
+        }
+        Ok(Accuracy { tol })
+    }
+
+    /// The target absolute error.
+    pub fn tol(&self) -> f64 {
+        self.tol
+    }
+
+    /// The discretisation of the elastic/plastic integrator for this target.
+    pub fn resolution(&self) -> Resolution {
+        let lt = -self.tol.log10(); // 1 .. 9
+        // Calibrated in tests/tests (convergence study): error ~ C·h^p.
+        let panels = (2.0_f64.powf((lt - 2.0).max(0.0) * 0.75)).ceil() as usize;
+        Resolution {
+            y_panels: panels.clamp(1, 256),
+            y_points: 8,
+            s_step: (0.6 * 10f64.powf(-(lt - 2.0).max(0.0) * 0.25)).clamp(0.003, 0.6),
+        }
+    }
+}
+
+/// Evaluate a model at the given accuracy.
+///
+/// Every output is finite for finite inputs. The elastic/plastic model uses
+/// the closed form of App. V eq. 23 when J3 = 0 (exact; ΔX has no effect
+/// then), and the rigid/plastic solution when max|J| > [`J_RIGID`].
+pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    let (j4, j5, j6) = match model {
+        Model::ElasticPlastic => {
+            if inp.j3 == 0.0 {
+                let (j4, j5) = closed::combined_slip_traction(inp.k, inp.j1, inp.j2);
+                (j4, j5, 0.0)
+            } else {
+                return elastic_plastic(inp, &acc.resolution());
+            }
+        }
+        Model::RigidPlastic => return rigid_plastic(inp, acc),
+        Model::Viscoelastic { deborah, z0 } => return viscoelastic(inp, deborah, z0, acc),
+    };
+    Ok(finish(inp, j4, j5, j6))
+}
+
+fn finish(inp: &Inputs, j4: f64, j5: f64, j6: f64) -> Outputs {
+    // Large J's with tiny forces: keep J7 finite (the products are bounded by
+    // max|J|·O(1); f64 holds them for |J| < 1e300).
+    let j7 = inp.j1 * j4 + inp.j2 * j5 + inp.j3 * j6;
+    Outputs { j4, j5, j6, j7 }
+}
+
+/// Scale J's down when they are so large that the rigid/plastic solution is
+/// exact to round-off (only ratios matter there).
+fn rigid_scaled(inp: &Inputs) -> ep::Scaled {
+    let m = inp.j1.abs().max(inp.j2.abs()).max(inp.j3.abs());
+    let f = if m > 1.0 { 1.0 / m } else { 1.0 };
+    ep::Scaled::new(inp.k, inp.j1 * f, inp.j2 * f, inp.j3 * f, inp.dx)
+}
+
+/// Elastic/plastic strip integration at an explicit resolution (no closed-form
+/// fast path; used by the convergence study and benches).
+pub fn elastic_plastic(inp: &Inputs, res: &Resolution) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    let m = inp.j1.abs().max(inp.j2.abs()).max(inp.j3.abs());
+    if m > J_RIGID {
+        return rigid_plastic(inp, Accuracy { tol: 1e-6 });
+    }
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx);
+    let (j4, j5, j6) = ep::solve(&sc, res);
+    Ok(finish(inp, j4, j5, j6))
+}
+
+/// Rigid/plastic model (App. IV eq. 14 with side slip and ΔX, App. V eq. 14).
+pub fn rigid_plastic(inp: &Inputs, acc: Accuracy) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    let lt = -acc.tol.log10();
+    let panels = (2.0 * 2f64.powf(lt * 0.5)).ceil() as usize;
+    let res = Resolution {
+        y_panels: panels.clamp(2, 512),
+        y_points: 8,
+        s_step: 0.1,
+    };
+    let sc = rigid_scaled(inp);
+    let (j4, j5, j6) = rigid::solve(&sc, &res, panels.clamp(2, 512));
+    Ok(finish(inp, j4, j5, j6))
+}
+
+/// Viscoelastic J+T model (sinh law, App. V eqs. 3–6) with the limit as a cap.
+///
+/// `deborah` = D = ηU/(Ḡa) > 0 (`inf` returns the elastic/plastic model),
+/// `z0` = τ0/τ̄ > 0 (`inf` = linear Maxwell fluid). The step count follows
+/// from the accuracy (the scheme is second order without the cap, first order
+/// where the cap is active).
+pub fn viscoelastic(
+    inp: &Inputs,
+    deborah: f64,
+    z0: f64,
+    acc: Accuracy,
+) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    if deborah.is_nan() || deborah <= 0.0 {
+        return Err(RheologyError::Deborah(deborah));
+    }
+    if z0.is_nan() || z0 <= 0.0 {
+        return Err(RheologyError::ReferenceStress(z0));
+    }
+    if deborah.is_infinite() {
+        return elastic_plastic(inp, &acc.resolution());
+    }
+    let lt = -acc.tol.log10();
+    let nsteps = (20.0 * 10f64.powf(lt * 0.5)).ceil().clamp(40.0, 20000.0) as usize;
+    let res = Resolution {
+        y_panels: ((lt - 1.0).max(1.0) * 2.0) as usize,
+        y_points: 8,
+        s_step: 0.1,
+    };
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx);
+    let (j4, j5, j6) = visco::solve(&sc, &res, nsteps, z0, deborah);
+    Ok(finish(inp, j4, j5, j6))
+}
