@@ -44,7 +44,12 @@
 //!   velocity of body 1 with respect to body 2 about the normal (right-hand
 //!   rule about `n`).
 //! * Slide-to-roll ratios are `ΔU/U` and `ΔV/U`; spin grouping `Z = ω√(ab)/U`.
-//! * The tilted twin disc has positive spin for positive α (equation 6).
+//! * Twin disc: the report gives no sign for the tilt α or the skew β. Here
+//!   α > 0 is the tilt that makes the upper disc's spin about the upward normal
+//!   positive (equation 6 then gives ω/U > 0), and β > 0 is a counter-clockwise
+//!   turn of the upper assembly seen from above; with `t` along the upper disc's
+//!   own rolling direction this gives `ΔV/U = +tan β` (equation 3). Both are
+//!   tested as special cases of [`contact_kinematics`].
 //!
 //! ## Assumptions
 //!
