@@ -1,0 +1,102 @@
+//! Benchmarks of one full contact evaluation and of its parts.
+//!
+//! The case: high-speed machine, k = 5 discs (Table 2-1), trace 79072704 of
+//! Appendix VI (m = 35, μ = 0.075, N = 5000 N, U = 80 m/s, Z = 0.021) with side
+//! slip ΔV/U = 8.22e-3 and 0.5 % longitudinal slip — slip, side slip and spin
+//! together. Parts: Hertz at the load, the rheology alone at the same J's, the
+//! regime classification, and the zero-spin closed-form path.
+#![allow(missing_docs)]
+
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use traction_contact::{Accuracy, Body, Fluid, Model, OperatingState, Options, TractionContact};
+
+fn bodies() -> (Body, Body) {
+    (
+        Body::steel(33e-3, 270e-3),
+        Body::steel(71.4e-3, f64::INFINITY),
+    )
+}
+
+fn contact(options: Options) -> TractionContact {
+    let (b1, b2) = bodies();
+    TractionContact::new(
+        &b1,
+        &b2,
+        Fluid::constant(35.0, 0.075).expect("fluid"),
+        options,
+    )
+    .expect("contact")
+}
+
+fn state(spin: f64) -> OperatingState {
+    OperatingState::new(5000.0, 80.0, 0.4, 80.0 * 8.22e-3, spin, 73.0).expect("state")
+}
+
+fn bench(c: &mut Criterion) {
+    let full = contact(Options::default());
+    let hz = full.geometry().at_load(5000.0).expect("hertz");
+    let omega = 0.021 * 80.0 / (hz.a * hz.b).sqrt();
+    let s = state(omega);
+    let r = full.evaluate(&s).expect("evaluation");
+    eprintln!(
+        "case: J1 = {:.3}, J2 = {:.3}, J3 = {:.3}; regime {:?}",
+        r.j1, r.j2, r.j3, r.regime
+    );
+
+    c.bench_function("evaluate, spin, tol 1e-4, regime", |b| {
+        b.iter(|| full.evaluate(black_box(&s)))
+    });
+    let no_regime = contact(Options {
+        classify_regime: false,
+        ..Options::default()
+    });
+    c.bench_function("evaluate, spin, tol 1e-4, no regime", |b| {
+        b.iter(|| no_regime.evaluate(black_box(&s)))
+    });
+    let coarse = contact(Options {
+        classify_regime: false,
+        accuracy: Accuracy::new(1e-3).expect("tol"),
+        ..Options::default()
+    });
+    c.bench_function("evaluate, spin, tol 1e-3, no regime", |b| {
+        b.iter(|| coarse.evaluate(black_box(&s)))
+    });
+    let s0 = state(0.0);
+    c.bench_function("evaluate, no spin (closed form)", |b| {
+        b.iter(|| full.evaluate(black_box(&s0)))
+    });
+    // Parts.
+    let geometry = *full.geometry();
+    c.bench_function("part: Hertz at load", |b| {
+        b.iter(|| geometry.at_load(black_box(5000.0)))
+    });
+    let inp = traction_rheology::Inputs::new(r.k, r.j1, r.j2, r.j3).expect("inputs");
+    c.bench_function("part: rheology elastic/plastic, tol 1e-4", |b| {
+        b.iter(|| {
+            traction_rheology::evaluate(black_box(&inp), Model::ElasticPlastic, Accuracy::default())
+        })
+    });
+    c.bench_function("part: rheology rigid/plastic (regime), tol 1e-4", |b| {
+        b.iter(|| traction_rheology::rigid_plastic(black_box(&inp), Accuracy::default()))
+    });
+    let (b1, b2) = bodies();
+    c.bench_function("build: TractionContact::new (Hertz geometry)", |b| {
+        b.iter(|| {
+            TractionContact::new(
+                black_box(&b1),
+                &b2,
+                Fluid::Constant {
+                    slope: 35.0,
+                    peak: 0.075,
+                    spin_peak: None,
+                },
+                Options::default(),
+            )
+        })
+    });
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

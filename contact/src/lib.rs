@@ -1,0 +1,852 @@
+//! # traction-contact: the dimensional lubricated rolling traction contact
+//!
+//! "These two rollers, this fluid, this load, these speeds: what forces, spin
+//! moment and losses do I get?" — in one call. The crate composes
+//! `traction-hertz` (contact ellipse), the fluid description (user `m`, `μ`, or
+//! physical `Ḡ`, `τ̄`, `h`), `traction-compliance` (disc compliance of the slope),
+//! `traction-kinematics` (body motion → U, ΔU, ΔV, ω) and `traction-rheology`
+//! (the Johnson & Tevaarwerk elastic/plastic model in the J groups). Report
+//! sections 3-0, 4-0 to 4-2, Appendix IV (NASA TP 1530) and Appendix V.
+//!
+//! # Model and equations
+//!
+//! Built once ([`TractionContact::new`]) from the two bodies (principal radii,
+//! E, ν; principal planes aligned, x = rolling direction), the [`Fluid`] and the
+//! [`Options`]; the load-independent Hertz geometry (k, Re, E', A, B, C) and
+//! Kalker's q_x, q_y are precomputed. Each [`TractionContact::evaluate`] of an
+//! [`OperatingState`] (load N, rolling speed U, slip ΔU, side slip ΔV, spin ω,
+//! inlet temperature θ) does:
+//!
+//! ```text
+//! Hertz (report eq. 1, 2):   a = (3A³ Re N/E')^(1/3), b = k a, P0 = 3N/(2πab)
+//! fluid:                     m, μ (user)   or   App. IV eq. 10 inverted:
+//!                            μ = τ̄ π a b / N,   m = (8/3) Ḡ a² b / (N h)
+//! compliance (App. IV B7):   m_x, m_y from the measured slope (see Compliance)
+//! J groups (App. IV 11, 12): J1 = (3π/8)(m_x/μ)(ΔU/U)√k
+//!                            J2 = (3π/8)(m_y/μ)(ΔV/U)√k
+//!                            J3 = (3π/8)(m_x/μ)(ω√(ab)/U)√k
+//! rheology:                  (J4, J5, J6) = J+T(k, J1, J2, J3)
+//! forces (App. IV 15, 16):   Fx = μ_f N J4,  Fy = μ_f N J5,  Mz = μ_f N √(ab) J6
+//! losses:                    P = Fx ΔU + Fy ΔV + Mz ω  (W)
+//!                            J7 = J1 J4 + J2 J5 + J3 J6 = (3π/8)√k m P/(μ² N U)  (App. IV 17)
+//! ```
+//!
+//! `μ_f = μ` except when the user gives a spin-peak traction coefficient
+//! ([`Fluid::with_spin_peak`]): then forces are `μ_s N J` with the J groups still
+//! built from the zero-spin μ — the report's "J5·MS" prediction of Appendix VI.
+//! `J6 = Mz/(μN√(ab))` is the normalisation the rheology crate documents (it shows
+//! that App. IV eq. 16's printed prefactor is off by k); the power balance above
+//! is tested here in dimensional form.
+//!
+//! # Sign conventions
+//!
+//! Those of `traction-kinematics`: body 1 is the report's "+" (upper) body,
+//! `ΔU = (v₁ − v₂)·x`, `ΔV = (v₁ − v₂)·y`, `ω = (Ω₁ − Ω₂)·z`, z the normal from
+//! body 2 into body 1, `(x, y, z)` right-handed. Fx, Fy and Mz are the traction
+//! force and moment that body 1 exerts on body 2 (equal and opposite on body 1):
+//! positive slip gives positive Fx, and the loss P ≥ 0 always.
+//!
+//! **Reversed rolling (U < 0).** The model is solved in the frame that rolls
+//! forwards: the lab frame turned by 180° about the normal (x → −x, y → −y), in
+//! which U, ΔU and ΔV change sign and ω keeps its sign; the forces are then
+//! turned back (Fx, Fy change sign, Mz does not). The reported J1..J7 are those
+//! of the forward-rolling frame: `J1 = c_x ΔU/U`, `J2 = c_y ΔV/U` (the signed lab
+//! ratios), `J3 = c_x ω√(ab)/|U|`, `J4 = sign(U) Fx/(μ_f N)`,
+//! `J5 = sign(U) Fy/(μ_f N)`, `J6 = Mz/(μ_f N √(ab))`, so J7 ≥ 0 always.
+//!
+//! # Regularisation at U → 0 (start-up, stops)
+//!
+//! The J groups grow like 1/|U|. With `U_f` = [`Options::rolling_speed_floor`]
+//! (default [`DEFAULT_ROLLING_SPEED_FLOOR`] = 1 mm/s):
+//!
+//! * the J groups use `U_eff = max(|U|, U_f)`: above the floor the model is
+//!   evaluated exactly; below it the J's saturate at `c·Δ/U_f`, which for any
+//!   relative speed Δ ≫ U_f·μ/m is deep in the rigid/plastic (Coulomb-like)
+//!   regime, while at zero relative motion (ΔU = ΔV = ω = 0) all forces are
+//!   exactly zero and they grow linearly (stiffly) with Δ — the usual
+//!   creep-velocity regularisation of Coulomb friction;
+//! * the forward (σ = +1) and reversed (σ = −1) rolling-frame solutions are
+//!   blended with `w = ½ + ¾t − ¼t³`, `t = clamp(U/U_f, −1, 1)`:
+//!   `F = w F₊ + (1 − w) F₋`. The elastic/plastic solution depends on which side
+//!   the inlet is (the sign of J3 in the rolling frame), so without the blend the
+//!   forces would jump at U = 0 whenever there is spin. The blend is C¹ in U,
+//!   exact (w ∈ {0, 1}) for |U| ≥ U_f, and dissipative (each branch is).
+//!
+//! # Regime (App. IV figure 14, regions I–III)
+//!
+//! The figure is lost; the report defines its boundaries as "the values of spin
+//! J3 corresponding to a 5 percent increase in the slip" compared with the master
+//! curves. [`Regime`] applies that 5 % criterion to the evaluated state:
+//!
+//! * [`Regime::ElasticWithoutSpin`] (region I): J3 = 0, or the slip magnitude
+//!   `S = (2/3)√(J1²+J2²)/√k` is at most 5 % above the slip `S₀` that the zero-spin
+//!   closed form (App. V eq. 23, ψ(S₀) = √(J4²+J5²)) needs for the same traction;
+//! * [`Regime::RigidPlastic`] (region III): otherwise, if the rigid/plastic
+//!   solution at the same J's is within 5 % of the elastic/plastic one,
+//!   `|J_ep − J_rp| ≤ 0.05 |J_rp|` over (J4, J5, J6) — a traction-level version
+//!   of the criterion, because inverting the rigid/plastic solution for the slip
+//!   would cost a root solve of the full model;
+//! * [`Regime::ElasticWithSpin`] (region II): otherwise.
+//!
+//! Region I takes precedence (at large slip without spin both simplifications
+//! hold). The classification costs one rigid/plastic evaluation when spin is
+//! present; [`Options::classify_regime`] = false skips it ([`Regime::NotClassified`]).
+//!
+//! # Assumptions
+//!
+//! Those of the composed crates: Hertzian dry-contact pressure and ellipse,
+//! constant film, isothermal J+T model (no thermal correction: the report's
+//! predictions omit it too), rigid-body kinematics at the ellipse centre, spin
+//! pole offset ΔX = 0, steady state. The rheology crate has a single Ḡ: with
+//! compliance on, the longitudinal slope m_x scales J1 and J3 and the lateral
+//! slope m_y scales J2 (an approximation: spin shears the film in both
+//! directions).
+//!
+//! # Example
+//!
+//! The low-speed machine, k = 1 discs (Table 2-1), Santotrac 50 at the
+//! conditions of Table 4-2 (m = 57.6, μ = 0.0956), 0.2 % slip:
+//!
+//! ```
+//! use traction_contact::{Body, Fluid, OperatingState, Options, TractionContact};
+//!
+//! let upper = Body::steel(25e-3, 12.5e-3);
+//! let lower = Body::steel(25e-3, f64::INFINITY);
+//! let contact = TractionContact::new(&upper, &lower, Fluid::constant(57.6, 0.0956)?, Options::default())?;
+//! let state = OperatingState::new(416.0, 20.0, 0.04, 0.0, 0.0, 70.0)?;
+//! let r = contact.evaluate(&state)?;
+//! // No spin: App. V eq. 22, Fx/N = μ ψ(S), S = (2/3) J1/√k,
+//! // J1 = (3π/8)(m/μ)(ΔU/U)√k, ψ(S) = (2/π)(atan S + S/(1 + S²)).
+//! let j1 = 3.0 * std::f64::consts::PI / 8.0 * (57.6 / 0.0956) * (0.04 / 20.0) * r.k.sqrt();
+//! let s = 2.0 / 3.0 * j1 / r.k.sqrt();
+//! let psi = 2.0 / std::f64::consts::PI * (s.atan() + s / (1.0 + s * s));
+//! assert!((r.traction_x / (0.0956 * psi) - 1.0).abs() < 1e-12);
+//! assert!((r.p0 / 1.9e9 - 1.0).abs() < 0.01); // Table 2-3: 416 N ↔ 1.9 GPa
+//! assert!((r.loss - r.fx * 0.04).abs() < 1e-12);
+//! # Ok::<(), traction_contact::ContactError>(())
+//! ```
+#![forbid(unsafe_code)]
+
+mod error;
+
+use std::f64::consts::PI;
+
+pub use error::ContactError;
+use error::check;
+pub use traction_compliance::{Direction, DiscMaterial};
+pub use traction_hertz::Body;
+use traction_hertz::Geometry;
+use traction_kinematics::ContactKinematics;
+use traction_rheology::Inputs;
+pub use traction_rheology::{Accuracy, Model};
+
+/// Default rolling-speed floor U_f of the J groups, m/s (see the crate docs).
+pub const DEFAULT_ROLLING_SPEED_FLOOR: f64 = 1e-3;
+/// Largest accepted |U|, |ΔU|, |ΔV| (m/s): beyond any machine; keeps every
+/// output (including the loss) finite.
+pub const MAX_SPEED: f64 = 1e6;
+/// Largest accepted |ω| (rad/s).
+pub const MAX_SPIN: f64 = 1e9;
+/// Largest accepted normal load (N).
+pub const MAX_LOAD: f64 = 1e12;
+/// Largest accepted traction slope m (dimensionless).
+pub const MAX_SLOPE: f64 = 1e6;
+/// Largest accepted traction coefficient μ (dimensionless).
+pub const MAX_TRACTION_COEFFICIENT: f64 = 10.0;
+/// The report's 5 % criterion for the regions of App. IV figure 14.
+pub const REGIME_TOLERANCE: f64 = 0.05;
+
+/// The fluid: how the traction slope m and peak traction coefficient μ of the
+/// contact are obtained.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Fluid {
+    /// User values of the initial traction slope m and the zero-spin peak
+    /// traction coefficient μ (both dimensionless, as measured on a disc
+    /// machine), optionally the spin-peak μ_s used to scale the forces.
+    Constant {
+        /// Initial traction slope m = d(F/N)/d(Δ/U) at zero slip.
+        slope: f64,
+        /// Zero-spin peak traction coefficient μ.
+        peak: f64,
+        /// Spin-peak traction coefficient μ_s (forces = μ_s N J), if given.
+        spin_peak: Option<f64>,
+    },
+    /// Physical film properties (App. IV eq. 10): mean shear modulus Ḡ (Pa),
+    /// mean limiting shear stress τ̄ (Pa) and film thickness h (m); then
+    /// μ = τ̄πab/N and m = (8/3)Ḡa²b/(Nh) depend on the load.
+    Physical {
+        /// Mean elastic shear modulus Ḡ of the film, Pa.
+        shear_modulus: f64,
+        /// Mean limiting shear stress τ̄ = μN/(πab), Pa.
+        limiting_stress: f64,
+        /// Film thickness h, m.
+        film_thickness: f64,
+    },
+}
+
+impl Fluid {
+    /// User m and μ; checks 0 < m ≤ [`MAX_SLOPE`], 0 < μ ≤ [`MAX_TRACTION_COEFFICIENT`].
+    pub fn constant(slope: f64, peak: f64) -> Result<Fluid, ContactError> {
+        let f = Fluid::Constant {
+            slope,
+            peak,
+            spin_peak: None,
+        };
+        f.validate()?;
+        Ok(f)
+    }
+
+    /// Physical Ḡ (Pa), τ̄ (Pa), h (m), each finite and > 0.
+    pub fn physical(
+        shear_modulus: f64,
+        limiting_stress: f64,
+        film_thickness: f64,
+    ) -> Result<Fluid, ContactError> {
+        let f = Fluid::Physical {
+            shear_modulus,
+            limiting_stress,
+            film_thickness,
+        };
+        f.validate()?;
+        Ok(f)
+    }
+
+    /// Add the spin-peak traction coefficient μ_s (only for [`Fluid::Constant`]):
+    /// forces become μ_s N J while the J groups keep the zero-spin μ (the
+    /// report's Appendix VI "J5*MS" column).
+    pub fn with_spin_peak(self, spin_peak: f64) -> Result<Fluid, ContactError> {
+        match self {
+            Fluid::Constant { slope, peak, .. } => {
+                let f = Fluid::Constant {
+                    slope,
+                    peak,
+                    spin_peak: Some(spin_peak),
+                };
+                f.validate()?;
+                Ok(f)
+            }
+            Fluid::Physical { .. } => Err(ContactError::OutOfRange {
+                quantity: "spin-peak traction coefficient μ_s",
+                value: spin_peak,
+                valid: "given only with user m and μ (Fluid::Constant)",
+            }),
+        }
+    }
+
+    fn validate(&self) -> Result<(), ContactError> {
+        match *self {
+            Fluid::Constant {
+                slope,
+                peak,
+                spin_peak,
+            } => {
+                check(
+                    "traction slope m",
+                    slope,
+                    slope > 0.0 && slope <= MAX_SLOPE,
+                    "in (0, 1e6]",
+                )?;
+                check(
+                    "peak traction coefficient μ",
+                    peak,
+                    peak > 0.0 && peak <= MAX_TRACTION_COEFFICIENT,
+                    "in (0, 10]",
+                )?;
+                if let Some(s) = spin_peak {
+                    check(
+                        "spin-peak traction coefficient μ_s",
+                        s,
+                        s > 0.0 && s <= MAX_TRACTION_COEFFICIENT,
+                        "in (0, 10]",
+                    )?;
+                }
+            }
+            Fluid::Physical {
+                shear_modulus,
+                limiting_stress,
+                film_thickness,
+            } => {
+                check(
+                    "fluid shear modulus Ḡ (Pa)",
+                    shear_modulus,
+                    shear_modulus > 0.0,
+                    "finite and > 0 Pa",
+                )?;
+                check(
+                    "limiting shear stress τ̄ (Pa)",
+                    limiting_stress,
+                    limiting_stress > 0.0,
+                    "finite and > 0 Pa",
+                )?;
+                check(
+                    "film thickness h (m)",
+                    film_thickness,
+                    film_thickness > 0.0,
+                    "finite and > 0 m",
+                )?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Disc-compliance correction of the traction slope (App. IV appendices A, B).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[non_exhaustive]
+pub enum Compliance {
+    /// No correction: the one slope m scales J1, J2 and J3.
+    #[default]
+    Off,
+    /// The discs are elastic (`material`, both discs alike), with Kalker's
+    /// q_x = π/C11, q_y = π/C22 at this contact's k (traction-compliance).
+    ///
+    /// * [`Fluid::Constant`]: m is the slope *measured* in `slope_measured_in`
+    ///   on this contact (the report measured side-slip slopes); the slope of
+    ///   the other direction follows from App. IV eq. B7 at the same contact
+    ///   and P0 (the Table 4-3 operation).
+    /// * [`Fluid::Physical`]: Ḡ is the film's own modulus; each direction's
+    ///   slope is the film and the discs in series (App. IV A3):
+    ///   1/m_i = 1/m_film + 1/m'_i with the dry slope m'_i = 3G_s/(2 q_i P0) (B3).
+    ///   `slope_measured_in` is not used.
+    Discs {
+        /// Disc material (E, ν; ν within Kalker's table, 0..0.5).
+        material: DiscMaterial,
+        /// Direction in which the user's slope m was measured.
+        slope_measured_in: Direction,
+    },
+}
+
+/// Evaluation options.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Constitutive model (default elastic/plastic, the report's).
+    pub model: Model,
+    /// Accuracy of the rheology integration (absolute, in J4, J5, J6).
+    pub accuracy: Accuracy,
+    /// Disc-compliance correction of the slope.
+    pub compliance: Compliance,
+    /// Rolling-speed floor U_f of the J groups, m/s, in [1e-9, 1] (see crate docs).
+    pub rolling_speed_floor: f64,
+    /// Classify the regime of App. IV figure 14 (costs a rigid/plastic
+    /// evaluation when spin is present).
+    pub classify_regime: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            model: Model::ElasticPlastic,
+            accuracy: Accuracy::default(),
+            compliance: Compliance::Off,
+            rolling_speed_floor: DEFAULT_ROLLING_SPEED_FLOOR,
+            classify_regime: true,
+        }
+    }
+}
+
+/// An operating state of the contact (SI units, lab frame, signs as in the crate docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OperatingState {
+    /// Normal load N, N (0 = contact open).
+    pub load: f64,
+    /// Rolling speed U = ½(v₁ + v₂)·x, m/s (either sign).
+    pub rolling_speed: f64,
+    /// Slip ΔU = (v₁ − v₂)·x, m/s.
+    pub slip: f64,
+    /// Side slip ΔV = (v₁ − v₂)·y, m/s.
+    pub side_slip: f64,
+    /// Spin ω = (Ω₁ − Ω₂)·z, rad/s.
+    pub spin: f64,
+    /// Inlet temperature θ, °C (used by temperature-dependent fluids).
+    pub inlet_temperature_celsius: f64,
+}
+
+impl OperatingState {
+    /// A checked state: 0 ≤ load ≤ [`MAX_LOAD`]; |U|, |ΔU|, |ΔV| ≤ [`MAX_SPEED`];
+    /// |ω| ≤ [`MAX_SPIN`]; θ finite and above −273.15 °C.
+    pub fn new(
+        load: f64,
+        rolling_speed: f64,
+        slip: f64,
+        side_slip: f64,
+        spin: f64,
+        inlet_temperature_celsius: f64,
+    ) -> Result<Self, ContactError> {
+        let s = OperatingState {
+            load,
+            rolling_speed,
+            slip,
+            side_slip,
+            spin,
+            inlet_temperature_celsius,
+        };
+        s.validate()?;
+        Ok(s)
+    }
+
+    /// The state from the bodies' motion at the contact (traction-kinematics:
+    /// U, ΔU, ΔV, ω in the same sign convention as this crate).
+    pub fn from_kinematics(
+        kinematics: &ContactKinematics,
+        load: f64,
+        inlet_temperature_celsius: f64,
+    ) -> Result<Self, ContactError> {
+        OperatingState::new(
+            load,
+            kinematics.rolling_speed,
+            kinematics.slip,
+            kinematics.side_slip,
+            kinematics.spin,
+            inlet_temperature_celsius,
+        )
+    }
+
+    /// Check the ranges (the fields are public, so [`TractionContact::evaluate`] checks again).
+    pub fn validate(&self) -> Result<(), ContactError> {
+        check(
+            "load N (normal load, N)",
+            self.load,
+            self.load >= 0.0 && self.load <= MAX_LOAD,
+            "in [0, 1e12] N",
+        )?;
+        let speed = |q, v: f64| check(q, v, v.abs() <= MAX_SPEED, "finite, |value| ≤ 1e6 m/s");
+        speed("rolling speed U (m/s)", self.rolling_speed)?;
+        speed("slip ΔU (m/s)", self.slip)?;
+        speed("side slip ΔV (m/s)", self.side_slip)?;
+        check(
+            "spin ω (rad/s)",
+            self.spin,
+            self.spin.abs() <= MAX_SPIN,
+            "finite, |ω| ≤ 1e9 rad/s",
+        )?;
+        check(
+            "inlet temperature θ (°C)",
+            self.inlet_temperature_celsius,
+            self.inlet_temperature_celsius > -273.15,
+            "finite and above −273.15 °C",
+        )?;
+        Ok(())
+    }
+}
+
+/// Traction regime of App. IV figure 14 (definition in the crate docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Regime {
+    /// Region I: the zero-spin elastic/plastic solution is sufficient.
+    ElasticWithoutSpin,
+    /// Region II: the full elastic/plastic analysis with spin is needed.
+    ElasticWithSpin,
+    /// Region III: the rigid/plastic (Coulomb-like) analysis is sufficient.
+    RigidPlastic,
+    /// Not classified ([`Options::classify_regime`] = false).
+    NotClassified,
+}
+
+impl Regime {
+    /// Short name used in CSV output.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Regime::ElasticWithoutSpin => "elastic-without-spin",
+            Regime::ElasticWithSpin => "elastic-with-spin",
+            Regime::RigidPlastic => "rigid-plastic",
+            Regime::NotClassified => "not-classified",
+        }
+    }
+}
+
+/// Result of one evaluation (SI units; J's in the forward-rolling frame).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Evaluation {
+    /// Traction force along x that body 1 exerts on body 2, N.
+    pub fx: f64,
+    /// Side force along y that body 1 exerts on body 2, N.
+    pub fy: f64,
+    /// Spin moment about z that body 1 exerts on body 2, N·m.
+    pub mz: f64,
+    /// Traction coefficient Fx/N (0 when N = 0).
+    pub traction_x: f64,
+    /// Side-force coefficient Fy/N (0 when N = 0).
+    pub traction_y: f64,
+    /// Power loss Fx ΔU + Fy ΔV + Mz ω, W (≥ 0).
+    pub loss: f64,
+    /// Semi-axis along x, m.
+    pub a: f64,
+    /// Semi-axis across x, m.
+    pub b: f64,
+    /// Aspect ratio k = b/a.
+    pub k: f64,
+    /// Maximum Hertz pressure P0, Pa.
+    pub p0: f64,
+    /// Slope m used for J1 and J3 (longitudinal).
+    pub m_used: f64,
+    /// Slope m used for J2 (lateral; equal to `m_used` without compliance).
+    pub m_side: f64,
+    /// Zero-spin peak traction coefficient μ used in the J groups.
+    pub mu_used: f64,
+    /// Traction coefficient that scales the forces (μ, or μ_s if given).
+    pub mu_force: f64,
+    /// Dimensionless slip J1.
+    pub j1: f64,
+    /// Dimensionless side slip J2.
+    pub j2: f64,
+    /// Dimensionless spin J3.
+    pub j3: f64,
+    /// Traction J4 = Fx/(μ_f N) (forward-rolling frame).
+    pub j4: f64,
+    /// Side force J5 = Fy/(μ_f N) (forward-rolling frame).
+    pub j5: f64,
+    /// Spin moment J6 = Mz/(μ_f N √(ab)).
+    pub j6: f64,
+    /// Losses J7 = J1 J4 + J2 J5 + J3 J6 (≥ 0).
+    pub j7: f64,
+    /// Regime of App. IV figure 14.
+    pub regime: Regime,
+}
+
+impl Evaluation {
+    /// Loss factor J7/J4 (App. IV eq. 18); `None` when J4 = 0.
+    pub fn loss_factor(&self) -> Option<f64> {
+        (self.j4 != 0.0).then(|| self.j7 / self.j4)
+    }
+}
+
+/// The traction contact, built once from the bodies, the fluid and the options.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TractionContact {
+    geometry: Geometry,
+    fluid: Fluid,
+    options: Options,
+    /// Kalker q_x, q_y and the disc shear modulus, when compliance is on.
+    discs: Option<(f64, f64, f64)>,
+}
+
+/// The dimensionless solution of one rolling frame.
+#[derive(Debug, Clone, Copy)]
+struct Branch {
+    j: [f64; 3],
+    out: [f64; 3],
+}
+
+impl TractionContact {
+    /// Build the contact: Hertz geometry of the two bodies (errors name bad
+    /// radii, materials, conformal contact), k within the rheology's range
+    /// [0.01, 100], Kalker's q_x, q_y if compliance is on.
+    pub fn new(
+        body1: &Body,
+        body2: &Body,
+        fluid: Fluid,
+        options: Options,
+    ) -> Result<Self, ContactError> {
+        fluid.validate()?;
+        check(
+            "rolling-speed floor U_f (m/s)",
+            options.rolling_speed_floor,
+            (1e-9..=1.0).contains(&options.rolling_speed_floor),
+            "in [1e-9, 1] m/s",
+        )?;
+        let geometry = Geometry::new(body1, body2)?;
+        let k = geometry.k;
+        check(
+            "aspect ratio k = b/a of the contact",
+            k,
+            (traction_rheology::K_MIN..=traction_rheology::K_MAX).contains(&k),
+            "in [0.01, 100] (the traction model's range)",
+        )?;
+        let discs = match options.compliance {
+            Compliance::Off => None,
+            Compliance::Discs { material, .. } => {
+                let gs = material.shear_modulus()?;
+                let nu = material.poisson_ratio;
+                let qx = traction_compliance::kalker_q(Direction::Longitudinal, k, nu)?;
+                let qy = traction_compliance::kalker_q(Direction::Side, k, nu)?;
+                Some((qx, qy, gs))
+            }
+        };
+        Ok(TractionContact {
+            geometry,
+            fluid,
+            options,
+            discs,
+        })
+    }
+
+    /// The precomputed Hertz geometry.
+    pub fn geometry(&self) -> &Geometry {
+        &self.geometry
+    }
+
+    /// The fluid.
+    pub fn fluid(&self) -> &Fluid {
+        &self.fluid
+    }
+
+    /// The options.
+    pub fn options(&self) -> &Options {
+        &self.options
+    }
+
+    /// Slopes (m_x, m_y), μ and μ_f at a loaded contact.
+    fn properties(&self, a: f64, b: f64, p0: f64, load: f64) -> Result<[f64; 4], ContactError> {
+        let (m, mu, mu_f, film) = match self.fluid {
+            Fluid::Constant {
+                slope,
+                peak,
+                spin_peak,
+            } => (slope, peak, spin_peak.unwrap_or(peak), None),
+            Fluid::Physical {
+                shear_modulus,
+                limiting_stress,
+                film_thickness,
+            } => {
+                let mu = limiting_stress * PI * a * b / load;
+                let m = 8.0 / 3.0 * shear_modulus * a * a * b / (load * film_thickness);
+                (m, mu, mu, Some(film_thickness))
+            }
+        };
+        let (mx, my) = match (self.discs, self.options.compliance) {
+            (
+                Some((qx, qy, gs)),
+                Compliance::Discs {
+                    slope_measured_in, ..
+                },
+            ) => {
+                if film.is_some() {
+                    // Film and discs in series (A3 with B3): 1/m = 1/m_film + 1/m'.
+                    let dry = |q: f64| 1.5 * gs / (q * p0);
+                    (
+                        1.0 / (1.0 / m + 1.0 / dry(qx)),
+                        1.0 / (1.0 / m + 1.0 / dry(qy)),
+                    )
+                } else {
+                    let c = |slope, q| traction_compliance::SlopeContact {
+                        slope,
+                        q,
+                        a: 1.0,
+                        h: 1.0,
+                    };
+                    match slope_measured_in {
+                        Direction::Longitudinal => {
+                            let my =
+                                traction_compliance::convert_slope(c(m, qx), c(0.0, qy), p0, gs)?;
+                            (m, my)
+                        }
+                        Direction::Side => {
+                            let mx =
+                                traction_compliance::convert_slope(c(m, qy), c(0.0, qx), p0, gs)?;
+                            (mx, m)
+                        }
+                    }
+                }
+            }
+            _ => (m, m),
+        };
+        Ok([mx, my, mu, mu_f])
+    }
+
+    /// Solve the rheology in one rolling frame.
+    fn branch(&self, k: f64, j: [f64; 3]) -> Result<Branch, ContactError> {
+        if j == [0.0; 3] {
+            return Ok(Branch { j, out: [0.0; 3] });
+        }
+        let inp = Inputs::new(k, j[0], j[1], j[2])?;
+        let o = traction_rheology::evaluate(&inp, self.options.model, self.options.accuracy)?;
+        Ok(Branch {
+            j,
+            out: [o.j4, o.j5, o.j6],
+        })
+    }
+
+    /// Evaluate the contact at an operating state.
+    ///
+    /// Errors name the quantity: a state out of range, a fluid that gives an
+    /// invalid slope, a failed compliance conversion. Every returned number is
+    /// finite.
+    pub fn evaluate(&self, state: &OperatingState) -> Result<Evaluation, ContactError> {
+        state.validate()?;
+        let k = self.geometry.k;
+        if state.load == 0.0 {
+            return Ok(self.open(state));
+        }
+        let hz = self.geometry.at_load(state.load)?;
+        let (a, b, p0, n) = (hz.a, hz.b, hz.p0, state.load);
+        let [mx, my, mu, mu_f] = self.properties(a, b, p0, n)?;
+        let sqrt_ab = (a * b).sqrt();
+        let sk = k.sqrt();
+        let cx = 3.0 * PI / 8.0 * (mx / mu) * sk;
+        let cy = 3.0 * PI / 8.0 * (my / mu) * sk;
+        let u = state.rolling_speed;
+        let uf = self.options.rolling_speed_floor;
+        let u_eff = u.abs().max(uf);
+        let t = (u / uf).clamp(-1.0, 1.0);
+        let w = 0.5 + 0.75 * t - 0.25 * t * t * t;
+        let rate = [
+            cx * state.slip / u_eff,
+            cy * state.side_slip / u_eff,
+            cx * state.spin * sqrt_ab / u_eff,
+        ];
+        // Frame σ: (σ J1, σ J2, J3).
+        let frame = |s: f64| [s * rate[0], s * rate[1], rate[2]];
+        let fwd = if w > 0.0 {
+            Some(self.branch(k, frame(1.0))?)
+        } else {
+            None
+        };
+        let rev = if w < 1.0 {
+            Some(self.branch(k, frame(-1.0))?)
+        } else {
+            None
+        };
+        // Lab-frame dimensionless forces: (σ J4_σ, σ J5_σ, J6_σ), blended.
+        let mut lab = [0.0; 3];
+        for (br, s, weight) in [(fwd, 1.0, w), (rev, -1.0, 1.0 - w)] {
+            if let Some(br) = br {
+                lab[0] += weight * s * br.out[0];
+                lab[1] += weight * s * br.out[1];
+                lab[2] += weight * br.out[2];
+            }
+        }
+        let sigma = if w >= 0.5 { 1.0 } else { -1.0 };
+        let dominant = if sigma > 0.0 { fwd } else { rev };
+        let fx = mu_f * n * lab[0];
+        let fy = mu_f * n * lab[1];
+        let mz = mu_f * n * sqrt_ab * lab[2];
+        let loss = (fx * state.slip + fy * state.side_slip + mz * state.spin).max(0.0);
+        let j = frame(sigma);
+        let (j4, j5, j6) = (sigma * lab[0], sigma * lab[1], lab[2]);
+        let j7 = (j[0] * j4 + j[1] * j5 + j[2] * j6).max(0.0);
+        let regime = match dominant {
+            Some(br) if self.options.classify_regime => self.classify(k, &br)?,
+            _ if self.options.classify_regime => Regime::ElasticWithoutSpin,
+            _ => Regime::NotClassified,
+        };
+        Ok(Evaluation {
+            fx,
+            fy,
+            mz,
+            traction_x: fx / n,
+            traction_y: fy / n,
+            loss,
+            a,
+            b,
+            k,
+            p0,
+            m_used: mx,
+            m_side: my,
+            mu_used: mu,
+            mu_force: mu_f,
+            j1: j[0],
+            j2: j[1],
+            j3: j[2],
+            j4,
+            j5,
+            j6,
+            j7,
+            regime,
+        })
+    }
+
+    /// The open contact (N = 0): no forces, no ellipse.
+    fn open(&self, _state: &OperatingState) -> Evaluation {
+        let (m, mu, mu_f) = match self.fluid {
+            Fluid::Constant {
+                slope,
+                peak,
+                spin_peak,
+            } => (slope, peak, spin_peak.unwrap_or(peak)),
+            // μ = τ̄πab/N and m are undefined at N = 0; reported as 0.
+            Fluid::Physical { .. } => (0.0, 0.0, 0.0),
+        };
+        Evaluation {
+            fx: 0.0,
+            fy: 0.0,
+            mz: 0.0,
+            traction_x: 0.0,
+            traction_y: 0.0,
+            loss: 0.0,
+            a: 0.0,
+            b: 0.0,
+            k: self.geometry.k,
+            p0: 0.0,
+            m_used: m,
+            m_side: m,
+            mu_used: mu,
+            mu_force: mu_f,
+            j1: 0.0,
+            j2: 0.0,
+            j3: 0.0,
+            j4: 0.0,
+            j5: 0.0,
+            j6: 0.0,
+            j7: 0.0,
+            regime: if self.options.classify_regime {
+                Regime::ElasticWithoutSpin
+            } else {
+                Regime::NotClassified
+            },
+        }
+    }
+
+    /// Regions I–III of App. IV figure 14 by the 5 % criterion (crate docs).
+    fn classify(&self, k: f64, br: &Branch) -> Result<Regime, ContactError> {
+        let [j1, j2, j3] = br.j;
+        let [j4, j5, j6] = br.out;
+        if j3 == 0.0 {
+            return Ok(Regime::ElasticWithoutSpin);
+        }
+        // Region I: slip increase over the zero-spin master curve ≤ 5 %.
+        let s_act = (2.0 / 3.0) * j1.hypot(j2) / k.sqrt();
+        let s_need = inverse_psi(j4.hypot(j5));
+        if s_act <= (1.0 + REGIME_TOLERANCE) * s_need {
+            return Ok(Regime::ElasticWithoutSpin);
+        }
+        // Region III: the rigid/plastic solution at the same J's within 5 %.
+        let inp = Inputs::new(k, j1, j2, j3)?;
+        let rp = traction_rheology::rigid_plastic(&inp, self.options.accuracy)?;
+        let d = (j4 - rp.j4).hypot(j5 - rp.j5).hypot(j6 - rp.j6);
+        let r = rp.j4.hypot(rp.j5).hypot(rp.j6);
+        Ok(if d <= REGIME_TOLERANCE * r {
+            Regime::RigidPlastic
+        } else {
+            Regime::ElasticWithSpin
+        })
+    }
+}
+
+/// Inverse of the zero-spin traction function ψ(S) of App. V eq. 22 for
+/// 0 ≤ T: with S = tan φ, πψ = 2φ + sin 2φ (monotone), Newton on φ with
+/// bisection safeguard; `f64::INFINITY` for T ≥ 1.
+pub fn inverse_psi(t: f64) -> f64 {
+    if t.is_nan() || t <= 0.0 {
+        return 0.0;
+    }
+    if t >= 1.0 {
+        return f64::INFINITY;
+    }
+    let target = PI * t;
+    let (mut lo, mut hi) = (0.0_f64, PI / 2.0);
+    let mut phi = 0.25 * target; // exact slope at 0: d(2φ+sin2φ)/dφ = 4
+    for _ in 0..60 {
+        let f = 2.0 * phi + (2.0 * phi).sin() - target;
+        if f > 0.0 {
+            hi = phi;
+        } else {
+            lo = phi;
+        }
+        let d = 4.0 * phi.cos().powi(2);
+        let mut next = phi - f / d;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        if (next - phi).abs() <= 1e-15 * phi.max(1e-300) {
+            phi = next;
+            break;
+        }
+        phi = next;
+    }
+    phi.tan()
+}
+
+#[cfg(test)]
+mod tests;

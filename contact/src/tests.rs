@@ -1,0 +1,523 @@
+//! Unit tests (exact solutions and invariants); the report reproductions live
+//! in `tests/tests/contact_*.rs`.
+
+use super::*;
+use proptest::prelude::*;
+use traction_rheology::closed;
+
+/// Low-speed machine, k = 1 discs of Table 2-1.
+fn ls_k1() -> (Body, Body) {
+    (
+        Body::steel(25e-3, 12.5e-3),
+        Body::steel(25e-3, f64::INFINITY),
+    )
+}
+
+/// High-speed machine, k = 5 discs of Table 2-1 (a contact with k ≠ 1).
+fn hs_k5() -> (Body, Body) {
+    (
+        Body::steel(33e-3, 270e-3),
+        Body::steel(71.4e-3, f64::INFINITY),
+    )
+}
+
+fn contact(bodies: (Body, Body), fluid: Fluid, options: Options) -> TractionContact {
+    TractionContact::new(&bodies.0, &bodies.1, fluid, options).expect("valid contact")
+}
+
+fn state(n: f64, u: f64, du: f64, dv: f64, w: f64) -> OperatingState {
+    OperatingState::new(n, u, du, dv, w, 70.0).expect("valid state")
+}
+
+#[test]
+fn zero_spin_matches_the_closed_form_exactly() {
+    // Independent: Hertz k and a from traction-hertz, then App. V eq. 23 by hand.
+    let c = contact(
+        hs_k5(),
+        Fluid::constant(52.4, 0.089).unwrap(),
+        Options::default(),
+    );
+    let (n, u, du, dv) = (1500.0, 20.0, 0.03, -0.02);
+    let r = c.evaluate(&state(n, u, du, dv, 0.0)).unwrap();
+    let k = c.geometry().k;
+    let cst = 3.0 * PI / 8.0 * (52.4 / 0.089) * k.sqrt();
+    let (j1, j2) = (cst * du / u, cst * dv / u);
+    let (j4, j5) = closed::combined_slip_traction(k, j1, j2);
+    // Same closed form, evaluated through the contact: round-off only (1e-12).
+    assert!((r.fx / (0.089 * n * j4) - 1.0).abs() < 1e-12);
+    assert!((r.fy / (0.089 * n * j5) - 1.0).abs() < 1e-12);
+    assert_eq!(r.mz, 0.0);
+    assert_eq!(r.regime, Regime::ElasticWithoutSpin);
+    // Small-slip limit: Fx/N → m ΔU/U (the definition of m), 1e-4 relative at ΔU/U = 1e-7.
+    let r = c.evaluate(&state(n, u, 2e-6, 0.0, 0.0)).unwrap();
+    assert!((r.traction_x / (52.4 * 1e-7) - 1.0).abs() < 1e-4);
+}
+
+#[test]
+fn power_balance_app_iv_eq_17() {
+    // J7 = (3π/8)√k m/(μ² N U) (Fx ΔU + Fy ΔV + Mz ω): ties the J6 normalisation
+    // Mz = μN√(ab)J6 to J3 = c ω√(ab)/U; round-off only (1e-10 relative).
+    let c = contact(
+        hs_k5(),
+        Fluid::constant(35.0, 0.075).unwrap(),
+        Options::default(),
+    );
+    for (u, du, dv, w) in [
+        (80.0, 0.1, 0.2, 17.0),
+        (-30.0, -0.05, 0.1, -9.0),
+        (5.0, 0.0, 0.0, 3.0),
+    ] {
+        let r = c.evaluate(&state(5000.0, u, du, dv, w)).unwrap();
+        let j7 = 3.0 * PI / 8.0 * r.k.sqrt() * 35.0 / (0.075 * 0.075 * 5000.0 * u.abs()) * r.loss;
+        assert!((r.j7 / j7 - 1.0).abs() < 1e-10, "{} vs {j7}", r.j7);
+        assert!(r.loss > 0.0);
+    }
+}
+
+#[test]
+fn reversal_is_the_180_degree_frame_rotation() {
+    // F(−U, −ΔU, −ΔV, ω) = (−Fx, −Fy, Mz) of F(U, ΔU, ΔV, ω): exact (1e-12), |U| ≥ U_f.
+    let c = contact(
+        hs_k5(),
+        Fluid::constant(35.0, 0.075).unwrap(),
+        Options::default(),
+    );
+    for (u, du, dv, w) in [
+        (20.0, 0.02, 0.05, 15.0),
+        (3.0, -0.01, 0.002, -4.0),
+        (1e-3, 1e-5, 0.0, 0.3),
+    ] {
+        let p = c.evaluate(&state(2000.0, u, du, dv, w)).unwrap();
+        let m = c.evaluate(&state(2000.0, -u, -du, -dv, w)).unwrap();
+        let tol = 1e-12 * 0.075 * 2000.0;
+        assert!((p.fx + m.fx).abs() < tol && (p.fy + m.fy).abs() < tol);
+        assert!((p.mz - m.mz).abs() < tol * 1e-3);
+        assert_eq!((p.j1, p.j2, p.j3), (m.j1, m.j2, m.j3));
+    }
+}
+
+#[test]
+fn odd_symmetry_in_all_relative_motions() {
+    // (ΔU, ΔV, ω) → −(ΔU, ΔV, ω) at the same U: forces and moment change sign
+    // (the rheology's odd symmetry); the integrator is symmetric: 1e-12.
+    let c = contact(
+        ls_k1(),
+        Fluid::constant(53.5, 0.083).unwrap(),
+        Options::default(),
+    );
+    let p = c.evaluate(&state(3000.0, 20.0, 0.01, 0.03, 8.0)).unwrap();
+    let m = c
+        .evaluate(&state(3000.0, 20.0, -0.01, -0.03, -8.0))
+        .unwrap();
+    let tol = 1e-12 * 0.083 * 3000.0;
+    assert!((p.fx + m.fx).abs() < tol && (p.fy + m.fy).abs() < tol);
+    assert!((p.mz + m.mz).abs() < tol);
+}
+
+#[test]
+fn zero_relative_motion_gives_zero_force_at_any_rolling_speed() {
+    let c = contact(
+        hs_k5(),
+        Fluid::constant(35.0, 0.075).unwrap(),
+        Options::default(),
+    );
+    for u in [-50.0, -1e-3, -1e-6, 0.0, 1e-9, 2e-4, 80.0] {
+        let r = c.evaluate(&state(1000.0, u, 0.0, 0.0, 0.0)).unwrap();
+        assert_eq!((r.fx, r.fy, r.mz, r.loss), (0.0, 0.0, 0.0, 0.0), "U = {u}");
+    }
+}
+
+#[test]
+fn rolling_speed_through_zero_is_continuous() {
+    // Slip, side slip and spin together; forces sampled across U = 0. The blend
+    // is C¹ and the J's are Lipschitz in U (slope ~ J/U_f): a step of 1e-9 U_f
+    // moves the forces by ~1e-9·μN·J, far below 1e-6 μN.
+    let c = contact(
+        hs_k5(),
+        Fluid::constant(35.0, 0.075).unwrap(),
+        Options::default(),
+    );
+    let uf = DEFAULT_ROLLING_SPEED_FLOOR;
+    let n = 1000.0;
+    for &u0 in &[0.0, uf, -uf, 0.5 * uf] {
+        let a = c
+            .evaluate(&state(n, u0 - 1e-12, 2e-6, -1e-6, 0.02))
+            .unwrap();
+        let b = c
+            .evaluate(&state(n, u0 + 1e-12, 2e-6, -1e-6, 0.02))
+            .unwrap();
+        let tol = 1e-6 * 0.075 * n;
+        assert!(
+            (a.fx - b.fx).abs() < tol,
+            "Fx jumps at U = {u0}: {} {}",
+            a.fx,
+            b.fx
+        );
+        assert!((a.fy - b.fy).abs() < tol, "Fy jumps at U = {u0}");
+        assert!((a.mz - b.mz).abs() < tol * 1e-3, "Mz jumps at U = {u0}");
+    }
+    // Without the blend the two rolling frames disagree at U = 0 (J3 changes
+    // sign with the inlet side): the blend is doing real work.
+    let k = c.geometry().k;
+    let r = c.evaluate(&state(n, 0.0, 2e-6, -1e-6, 0.02)).unwrap();
+    let cst = 3.0 * PI / 8.0 * (35.0 / 0.075) * k.sqrt();
+    let j = [
+        cst * 2e-6 / uf,
+        cst * -1e-6 / uf,
+        cst * 0.02 * (r.a * r.b).sqrt() / uf,
+    ];
+    let f = traction_rheology::evaluate(
+        &Inputs::new(k, j[0], j[1], j[2]).unwrap(),
+        Model::ElasticPlastic,
+        Accuracy::default(),
+    )
+    .unwrap();
+    let g = traction_rheology::evaluate(
+        &Inputs::new(k, -j[0], -j[1], j[2]).unwrap(),
+        Model::ElasticPlastic,
+        Accuracy::default(),
+    )
+    .unwrap();
+    assert!(
+        (f.j5 + g.j5).abs() > 0.01,
+        "branches agree: {} {}",
+        f.j5,
+        -g.j5
+    );
+    // At U = 0 the result is their mean (w = 1/2): 1e-12.
+    assert!((r.fy / (0.075 * n) - 0.5 * (f.j5 - g.j5)).abs() < 1e-12);
+}
+
+#[test]
+fn start_up_passes_to_the_rigid_plastic_limit() {
+    // U → 0 with finite slip: J's ~ cΔ/U_f ≫ 1, forces → Coulomb μN along the slip.
+    let c = contact(
+        ls_k1(),
+        Fluid::constant(57.6, 0.0956).unwrap(),
+        Options::default(),
+    );
+    let n = 416.0;
+    let r = c.evaluate(&state(n, 0.0, 0.5, 0.0, 0.0)).unwrap();
+    // Closed form at J1 = c·0.5/1e-3 ≈ 8e5: 1 − ψ ≈ 8/(3πS) < 1e-5 (App. V eq. 22).
+    assert!((r.traction_x / 0.0956 - 1.0).abs() < 1e-5);
+    assert_eq!(r.regime, Regime::ElasticWithoutSpin);
+    // Slip plus spin at a stop: the rigid/plastic solution of the rheology
+    // crate at the same J ratios (elastic lag < 1e-3 at J ~ 1e5; tol 2e-3).
+    let r = c.evaluate(&state(n, 0.0, 0.05, 0.02, 40.0)).unwrap();
+    let inp = Inputs::new(r.k, r.j1, r.j2, r.j3).unwrap();
+    let rp = traction_rheology::rigid_plastic(&inp, Accuracy::default()).unwrap();
+    assert!(
+        (r.j4 - rp.j4).abs() < 2e-3 && (r.j5 - rp.j5).abs() < 2e-3,
+        "{r:?} {rp:?}"
+    );
+    assert_eq!(r.regime, Regime::RigidPlastic);
+}
+
+#[test]
+fn open_and_vanishing_load() {
+    let c = contact(
+        hs_k5(),
+        Fluid::constant(35.0, 0.075).unwrap(),
+        Options::default(),
+    );
+    let r = c.evaluate(&state(0.0, 20.0, 0.1, 0.1, 10.0)).unwrap();
+    assert_eq!(
+        (r.fx, r.fy, r.mz, r.loss, r.a, r.p0),
+        (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    );
+    let mut prev = f64::INFINITY;
+    for n in [1e-3, 1e-12, 1e-30, 1e-300] {
+        let r = c.evaluate(&state(n, 20.0, 0.1, 0.1, 10.0)).unwrap();
+        for v in [
+            r.fx, r.fy, r.mz, r.loss, r.j1, r.j2, r.j3, r.j4, r.j5, r.j6, r.j7,
+        ] {
+            assert!(v.is_finite());
+        }
+        assert!(r.fx.abs() <= 0.075 * n * (1.0 + 1e-9) && r.fx.abs() < prev);
+        prev = r.fx.abs();
+    }
+    // Physical fluid: μ = τ̄πab/N grows like N^(-1/3) but the forces vanish.
+    let c = contact(
+        hs_k5(),
+        Fluid::physical(1e9, 30e6, 0.3e-6).unwrap(),
+        Options::default(),
+    );
+    let r = c.evaluate(&state(0.0, 20.0, 0.1, 0.0, 0.0)).unwrap();
+    assert_eq!((r.fx, r.mu_used), (0.0, 0.0));
+    let r = c.evaluate(&state(1e-20, 20.0, 0.1, 0.0, 0.0)).unwrap();
+    assert!(r.fx.is_finite() && r.fx.abs() < 1e-9);
+}
+
+#[test]
+fn physical_properties_are_app_iv_eq_10() {
+    // Choose Ḡ, τ̄, h from (m, μ) at one load by eq. 10, by hand; the physical
+    // fluid must then give the constant fluid's forces at that load (1e-12).
+    let bodies = hs_k5();
+    let (m, mu, n, h) = (35.0, 0.075, 5000.0, 0.4e-6);
+    let hz = traction_hertz::solve_load(&bodies.0, &bodies.1, n).unwrap();
+    let g = 3.0 / 8.0 * m * n * h / (hz.a * hz.a * hz.b);
+    let tau = mu * n / (PI * hz.a * hz.b);
+    let cp = contact(
+        bodies,
+        Fluid::physical(g, tau, h).unwrap(),
+        Options::default(),
+    );
+    let cc = contact(bodies, Fluid::constant(m, mu).unwrap(), Options::default());
+    let s = state(n, 80.0, 0.1, 0.05, 17.0);
+    let (p, q) = (cp.evaluate(&s).unwrap(), cc.evaluate(&s).unwrap());
+    assert!((p.m_used / m - 1.0).abs() < 1e-12 && (p.mu_used / mu - 1.0).abs() < 1e-12);
+    assert!((p.fx / q.fx - 1.0).abs() < 1e-9 && (p.mz / q.mz - 1.0).abs() < 1e-9);
+    // J1 = Ḡ√(ab)ΔU/(τ̄hU) (App. IV eq. 11 in physical form): 1e-12.
+    let j1 = g * (hz.a * hz.b).sqrt() * 0.1 / (tau * h * 80.0);
+    assert!((p.j1 / j1 - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn compliance_series_and_conversion() {
+    let bodies = ls_k1();
+    let steel = DiscMaterial::REPORT_STEEL;
+    let opts = |d| Options {
+        compliance: Compliance::Discs {
+            material: steel,
+            slope_measured_in: d,
+        },
+        ..Options::default()
+    };
+    // Constant fluid measured in side slip: m_y = m, m_x from B7 (compliance crate).
+    let c = contact(
+        bodies,
+        Fluid::constant(57.6, 0.0956).unwrap(),
+        opts(Direction::Side),
+    );
+    let r = c.evaluate(&state(416.0, 20.0, 0.01, 0.0, 0.0)).unwrap();
+    let mx = traction_compliance::convert_slope_same_contact(
+        57.6,
+        r.k,
+        r.p0,
+        Direction::Side,
+        Direction::Longitudinal,
+        steel,
+    )
+    .unwrap();
+    assert_eq!(r.m_side, 57.6);
+    assert!((r.m_used / mx - 1.0).abs() < 1e-12);
+    // k = 1: Kalker C11 > C22 (q_x < q_y), the discs are stiffer along x, so m_x > m_y.
+    assert!(r.m_used > r.m_side);
+    // Physical fluid: film and discs in series, 1/m = 1/m_film + 2 q P0/(3 G_s), by hand.
+    let c = contact(
+        bodies,
+        Fluid::physical(1e9, 30e6, 0.3e-6).unwrap(),
+        opts(Direction::Side),
+    );
+    let off = contact(
+        bodies,
+        Fluid::physical(1e9, 30e6, 0.3e-6).unwrap(),
+        Options::default(),
+    );
+    let s = state(416.0, 20.0, 0.01, 0.0, 0.0);
+    let (r, r0) = (c.evaluate(&s).unwrap(), off.evaluate(&s).unwrap());
+    let gs = steel.shear_modulus().unwrap();
+    let qx = traction_compliance::kalker_q(Direction::Longitudinal, r.k, 0.3).unwrap();
+    let m_series = 1.0 / (1.0 / r0.m_used + 2.0 * qx * r.p0 / (3.0 * gs));
+    assert!((r.m_used / m_series - 1.0).abs() < 1e-12);
+    assert!(r.m_used < r0.m_used);
+}
+
+#[test]
+fn kinematics_input_twin_disc() {
+    // Tilted upper disc of the low-speed k = 1 rig (Table 2-4: e = R_y = 12.5 mm,
+    // 6°): the general 3-D kinematics must give ω/U of eq. 6 (1e-12 relative).
+    use traction_kinematics::{BodyMotion, contact_kinematics, tilted_disc_spin_per_speed};
+    type V = nalgebra::Vector3<f64>;
+    let (alpha, ry, e, r2) = (6f64.to_radians(), 12.5e-3, 12.5e-3, 25e-3);
+    let rr = ry * alpha.cos() + e; // rolling radius of the tilted disc
+    let u = 20.0;
+    // Lower disc: axis along y through (0, 0, −r2), rolling along +x at the contact.
+    let lower = BodyMotion::rotating(V::new(0.0, u / r2, 0.0), V::new(0.0, 0.0, -r2));
+    // Upper disc: axis (0, cos α, −sin α) through the point rr/cos α above the
+    // contact (distance rr from the contact), turning so its surface moves along +x.
+    let axis = V::new(0.0, alpha.cos(), -alpha.sin());
+    let centre = V::new(0.0, 0.0, rr / alpha.cos());
+    let w1 = u / rr;
+    let upper = BodyMotion::rotating(-axis * w1, centre);
+    let kin = contact_kinematics(
+        &upper,
+        &lower,
+        V::zeros(),
+        V::new(0.0, 0.0, 1.0),
+        V::new(1.0, 0.0, 0.0),
+    )
+    .unwrap();
+    let s = OperatingState::from_kinematics(&kin, 416.0, 70.0).unwrap();
+    let expect = tilted_disc_spin_per_speed(alpha, ry, e).unwrap();
+    assert!(
+        (s.spin / s.rolling_speed / expect - 1.0).abs() < 1e-9,
+        "{} vs {expect}",
+        s.spin / s.rolling_speed
+    );
+    assert!(s.slip.abs() < 1e-12 && s.side_slip.abs() < 1e-12);
+    let c = contact(
+        ls_k1(),
+        Fluid::constant(53.5, 0.083).unwrap(),
+        Options::default(),
+    );
+    let r = c.evaluate(&s).unwrap();
+    assert!(r.j3 > 0.0 && r.fy.abs() > 0.0 && r.loss > 0.0);
+}
+
+#[test]
+fn regimes_by_the_5_percent_criterion() {
+    let c = contact(
+        ls_k1(),
+        Fluid::constant(53.5, 0.083).unwrap(),
+        Options::default(),
+    );
+    let n = 416.0;
+    // Region I: no spin.
+    assert_eq!(
+        c.evaluate(&state(n, 20.0, 0.02, 0.0, 0.0)).unwrap().regime,
+        Regime::ElasticWithoutSpin
+    );
+    // Region III: spin J3 ~ 700 with traction ~ 0.75 (ε = J1/J3 near the speed pole).
+    let r = c.evaluate(&state(n, 0.05, 0.02, 0.0, 50.0)).unwrap();
+    assert!(r.j3 > 100.0, "{r:?}");
+    assert_eq!(r.regime, Regime::RigidPlastic, "{r:?}");
+    // Region II: J3 ≈ 2, J1 ≈ 2 (App. IV fig. 9: spin visibly lowers the traction).
+    let cst = 3.0 * PI / 8.0 * 53.5 / 0.083;
+    let hz = c.geometry().at_load(n).unwrap();
+    let w = 2.0 / cst * 20.0 / (hz.a * hz.b).sqrt();
+    let r = c
+        .evaluate(&state(n, 20.0, 2.0 / cst * 20.0, 0.0, w))
+        .unwrap();
+    assert!((r.j3 - 2.0).abs() < 1e-9);
+    assert_eq!(r.regime, Regime::ElasticWithSpin, "{r:?}");
+    let no = Options {
+        classify_regime: false,
+        ..Options::default()
+    };
+    let c = contact(ls_k1(), Fluid::constant(53.5, 0.083).unwrap(), no);
+    assert_eq!(
+        c.evaluate(&state(n, 20.0, 0.02, 0.0, 5.0)).unwrap().regime,
+        Regime::NotClassified
+    );
+}
+
+#[test]
+fn inverse_psi_inverts_psi() {
+    // Independent check through the rheology crate's ψ: 1e-12.
+    for s in [1e-6, 0.01, 0.5, 1.0, 3.0, 50.0, 1e3] {
+        let t = closed::psi(s);
+        // Conditioning: dS/S = dψ·π(1+S²)²/(4S²·S)·S ≈ (π/4)S³·ε for S ≫ 1.
+        let tol = 1e-12 + 10.0 * PI / 4.0 * s.powi(3) * f64::EPSILON;
+        assert!((inverse_psi(t) / s - 1.0).abs() < tol, "S = {s}");
+    }
+    assert_eq!(inverse_psi(0.0), 0.0);
+    assert_eq!(inverse_psi(1.0), f64::INFINITY);
+}
+
+#[test]
+fn errors_name_the_quantity() {
+    let msg = |e: ContactError| e.to_string();
+    assert!(
+        msg(OperatingState::new(-1.0, 1.0, 0.0, 0.0, 0.0, 20.0).unwrap_err()).contains("load N")
+    );
+    assert!(
+        msg(OperatingState::new(1.0, f64::NAN, 0.0, 0.0, 0.0, 20.0).unwrap_err())
+            .contains("rolling speed U")
+    );
+    assert!(
+        msg(OperatingState::new(1.0, 1.0, 0.0, 0.0, f64::INFINITY, 20.0).unwrap_err())
+            .contains("spin ω")
+    );
+    assert!(
+        msg(OperatingState::new(1.0, 1.0, 0.0, 0.0, 0.0, -300.0).unwrap_err())
+            .contains("inlet temperature")
+    );
+    assert!(msg(Fluid::constant(0.0, 0.1).unwrap_err()).contains("traction slope m"));
+    assert!(
+        msg(Fluid::constant(30.0, f64::NAN).unwrap_err()).contains("peak traction coefficient μ")
+    );
+    assert!(msg(Fluid::physical(1e9, 3e7, -1.0).unwrap_err()).contains("film thickness h"));
+    let bad = Body::steel(0.0, 1.0);
+    let e = TractionContact::new(
+        &bad,
+        &Body::steel(1.0, 1.0),
+        Fluid::constant(30.0, 0.1).unwrap(),
+        Options::default(),
+    );
+    assert!(msg(e.unwrap_err()).starts_with("Hertz contact:"));
+    // A contact too elongated for the traction model.
+    let long = Body::steel(1.0, 1e-4);
+    let e = TractionContact::new(
+        &long,
+        &Body::steel(1.0, f64::INFINITY),
+        Fluid::constant(30.0, 0.1).unwrap(),
+        Options::default(),
+    );
+    assert!(msg(e.unwrap_err()).contains("aspect ratio k"));
+    let o = Options {
+        rolling_speed_floor: 0.0,
+        ..Options::default()
+    };
+    let e = TractionContact::new(
+        &Body::steel(1.0, 1.0),
+        &Body::steel(1.0, 1.0),
+        Fluid::constant(30.0, 0.1).unwrap(),
+        o,
+    );
+    assert!(msg(e.unwrap_err()).contains("rolling-speed floor"));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Every output finite; loss ≥ 0, J7 ≥ 0; the traction vector within the
+    /// limit (|(J4, J5)| ≤ 1 + 1e-3, the rheology's default accuracy ×10).
+    #[test]
+    fn outputs_finite_and_dissipative(
+        n in prop_oneof![Just(0.0), 1e-20f64..1e-3, 1.0f64..2e5],
+        u in prop_oneof![Just(0.0), -1e-3f64..1e-3, -100.0f64..100.0],
+        du in -5.0f64..5.0, dv in -5.0f64..5.0, w in prop_oneof![Just(0.0), -500.0f64..500.0],
+        m in 5.0f64..200.0, mu in 0.01f64..0.2,
+    ) {
+        let c = contact(hs_k5(), Fluid::constant(m, mu).unwrap(), Options::default());
+        let r = c.evaluate(&state(n, u, du * 1e-2, dv * 1e-2, w)).unwrap();
+        for v in [r.fx, r.fy, r.mz, r.loss, r.traction_x, r.traction_y, r.a, r.b, r.p0,
+                  r.j1, r.j2, r.j3, r.j4, r.j5, r.j6, r.j7, r.m_used, r.mu_used] {
+            prop_assert!(v.is_finite());
+        }
+        prop_assert!(r.loss >= 0.0 && r.j7 >= 0.0);
+        prop_assert!(r.j4.hypot(r.j5) <= 1.0 + 1e-3);
+    }
+
+    /// The 180° rotation about the normal (x → −x, y → −y) for |U| ≥ U_f: exact.
+    #[test]
+    fn frame_rotation_symmetry(
+        u in 1e-3f64..80.0, du in -0.05f64..0.05, dv in -0.05f64..0.05, w in -50.0f64..50.0,
+        n in 10.0f64..5000.0,
+    ) {
+        let c = contact(ls_k1(), Fluid::constant(53.5, 0.083).unwrap(), Options::default());
+        let p = c.evaluate(&state(n, u, du, dv, w)).unwrap();
+        let q = c.evaluate(&state(n, -u, -du, -dv, w)).unwrap();
+        let tol = 1e-12 * 0.083 * n;
+        prop_assert!((p.fx + q.fx).abs() <= tol && (p.fy + q.fy).abs() <= tol);
+        prop_assert!((p.mz - q.mz).abs() <= tol);
+    }
+
+    /// Continuity in U across the floor band: forces at U and U + 1e-3 U_f
+    /// differ by at most 1e-3·|J|·μN·(a few) (Lipschitz bound of the blend and J's).
+    #[test]
+    fn continuity_in_rolling_speed(
+        t in -1.5f64..1.5, du in -1e-5f64..1e-5, w in -0.05f64..0.05,
+    ) {
+        let c = contact(hs_k5(), Fluid::constant(35.0, 0.075).unwrap(), Options::default());
+        let uf = DEFAULT_ROLLING_SPEED_FLOOR;
+        let n = 1000.0;
+        let a = c.evaluate(&state(n, t * uf, du, 0.0, w)).unwrap();
+        let b = c.evaluate(&state(n, (t + 1e-6) * uf, du, 0.0, w)).unwrap();
+        let jmax = a.j1.abs().max(a.j3.abs()).max(1.0);
+        let tol = 1e-6 * 10.0 * jmax * 0.075 * n;
+        prop_assert!((a.fx - b.fx).abs() <= tol, "{} {}", a.fx, b.fx);
+        prop_assert!((a.fy - b.fy).abs() <= tol, "{} {}", a.fy, b.fy);
+    }
+}
