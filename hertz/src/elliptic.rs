@@ -20,8 +20,17 @@
 //! implementation here is written from the published algorithm.
 
 /// Tolerance parameter `r` of Carlson's algorithm: the truncation error of the
-/// final series is of order `r`, far below `f64` round-off.
+/// final series is of order `r`, far below `f64` round-off. (Used through the
+/// precomputed stopping constants below.)
+#[cfg(test)]
 const CARLSON_R: f64 = 1e-16;
+
+/// `(3r)^(-1/6)` for `r` = [`CARLSON_R`] (the R_F stopping constant),
+/// precomputed; checked against `powf` in the tests.
+const RF_Q_FACTOR: f64 = 386.497_293_934_345_75;
+
+/// `(r/4)^(-1/6)` for `r` = [`CARLSON_R`] (the R_D stopping constant).
+const RD_Q_FACTOR: f64 = 584.803_547_642_573;
 
 /// Iteration cap: each duplication step divides the spread of the arguments by
 /// 4, so about 30 steps reach round-off from any spread; the cap only guards
@@ -45,8 +54,7 @@ pub fn rf(x: f64, y: f64, z: f64) -> f64 {
         return f64::NAN;
     }
     let a0 = (x + y + z) / 3.0;
-    let q =
-        (3.0 * CARLSON_R).powf(-1.0 / 6.0) * (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs());
+    let q = RF_Q_FACTOR * (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs());
     let (mut xm, mut ym, mut zm, mut am) = (x, y, z, a0);
     let mut pow4 = 1.0; // 4^-m
     for _ in 0..MAX_STEPS {
@@ -85,8 +93,7 @@ pub fn rd(x: f64, y: f64, z: f64) -> f64 {
         return f64::NAN;
     }
     let a0 = (x + y + 3.0 * z) / 5.0;
-    let q = (0.25 * CARLSON_R).powf(-1.0 / 6.0)
-        * (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs());
+    let q = RD_Q_FACTOR * (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs());
     let (mut xm, mut ym, mut zm, mut am) = (x, y, z, a0);
     let mut pow4 = 1.0; // 4^-m
     let mut sum = 0.0;
@@ -168,6 +175,12 @@ mod tests {
         }
         let k = std::f64::consts::FRAC_PI_2 / a;
         (k, k * (1.0 - c2_sum))
+    }
+
+    #[test]
+    fn stopping_constants() {
+        assert!(((3.0 * CARLSON_R).powf(-1.0 / 6.0) / RF_Q_FACTOR - 1.0).abs() < 1e-14);
+        assert!(((0.25 * CARLSON_R).powf(-1.0 / 6.0) / RD_Q_FACTOR - 1.0).abs() < 1e-14);
     }
 
     #[test]
