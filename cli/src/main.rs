@@ -12,6 +12,7 @@ mod compliance;
 mod error;
 mod fit;
 mod fluid;
+mod fmu;
 mod hertz;
 mod jt;
 mod kinematics;
@@ -41,6 +42,8 @@ enum Command {
     Kinematics(kinematics::KinematicsArgs),
     /// Disc compliance: Kalker coefficients and traction-slope conversion.
     Compliance(compliance::ComplianceArgs),
+    /// Build and package the FMI 2.0 co-simulation FMU (`fmu build --out PATH.fmu`).
+    Fmu(fmu::FmuArgs),
 }
 
 fn run(cli: Cli) -> Result<(), CliError> {
@@ -51,6 +54,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Fluid(a) => fluid::run(a),
         Command::Kinematics(a) => kinematics::run(a),
         Command::Compliance(a) => compliance::run(a),
+        Command::Fmu(a) => fmu::run(a),
     }
 }
 

@@ -1,0 +1,78 @@
+//! doStep + getReal of all Real outputs, with spin, through the C ABI (what a
+//! host pays per communication step). Goal: ≥ 200 000 steps/s on one core.
+#![allow(unsafe_code)]
+#![allow(missing_docs)]
+
+use std::ffi::CString;
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use traction_fmu::ffi::*;
+use traction_fmu::model_description::guid;
+use traction_fmu::variables::{Causality, VARIABLES, vr};
+
+fn bench(c: &mut Criterion) {
+    let cb = Fmi2CallbackFunctions {
+        logger: None,
+        allocate_memory: None,
+        free_memory: None,
+        step_finished: None,
+        component_environment: std::ptr::null_mut(),
+    };
+    let name = CString::new("bench").unwrap_or_default();
+    let g = CString::new(guid()).unwrap_or_default();
+    let outs: Vec<u32> = VARIABLES
+        .iter()
+        .filter(|v| v.causality == Causality::Output && v.vr != vr::REGIME)
+        .map(|v| v.vr)
+        .collect();
+    let mut values = vec![0.0; outs.len()];
+    // SAFETY: valid pointers for the lifetime of the instance.
+    unsafe {
+        let inst = fmi2Instantiate(
+            name.as_ptr(),
+            FMI2_COSIMULATION,
+            g.as_ptr(),
+            std::ptr::null(),
+            &cb,
+            0,
+            0,
+        );
+        assert!(!inst.is_null());
+        let ins = [
+            vr::LOAD,
+            vr::OMEGA1,
+            vr::OMEGA2,
+            vr::SIDE_SLIP_VELOCITY,
+            vr::SPIN,
+        ];
+        let x = [800.0, 600.0, 275.0, 0.05, 20.0];
+        assert_eq!(
+            fmi2SetReal(inst, ins.as_ptr(), ins.len(), x.as_ptr()),
+            FMI2_OK
+        );
+        assert_eq!(fmi2EnterInitializationMode(inst), FMI2_OK);
+        assert!(fmi2ExitInitializationMode(inst) <= FMI2_WARNING);
+        let mut t = 0.0;
+        let mut k = 0u32;
+        c.bench_function(
+            "doStep + setReal(omega1) + getReal(25 outputs), with spin",
+            |b| {
+                b.iter(|| {
+                    // A new input each step, as in a coupled simulation.
+                    k = k.wrapping_add(1);
+                    let w1 = 600.0 + f64::from(k % 100) * 0.01;
+                    fmi2SetReal(inst, &vr::OMEGA1, 1, &w1);
+                    fmi2DoStep(inst, t, 1e-4, 1);
+                    t += 1e-4;
+                    fmi2GetReal(inst, outs.as_ptr(), outs.len(), values.as_mut_ptr());
+                    black_box(&values);
+                });
+            },
+        );
+        fmi2FreeInstance(inst);
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,481 @@
+//! Fuzz-style robustness test through the C ABI: ≥ 10⁵ random steps with
+//! random inputs (NaN, ±inf, negative, zero speed, huge, tiny) and random call
+//! orders drawn from the FMI 2 co-simulation state machine, plus some calls
+//! that the state machine forbids. Checks: no panic escapes (no fmi2Fatal),
+//! every fmi2Error comes with a logged message (non-NULL category), and every
+//! output returned with fmi2OK/fmi2Warning is finite.
+#![allow(unsafe_code)]
+
+use std::ffi::{CStr, CString, c_char, c_int, c_void};
+
+use traction_fmu::ffi::*;
+use traction_fmu::model_description::guid;
+use traction_fmu::variables::{VARIABLES, vr};
+
+#[derive(Default)]
+struct Sink {
+    messages: usize,
+    errors: usize,
+    null_category: usize,
+    last: String,
+}
+
+/// The logger, without the variadic tail: on x86-64 and aarch64 Linux a
+/// non-variadic callee reads the same registers, and the FMU passes no
+/// variadic arguments (it escapes `%` instead).
+unsafe extern "C" fn logger_impl(
+    env: *mut c_void,
+    _name: *const c_char,
+    status: c_int,
+    category: *const c_char,
+    message: *const c_char,
+) {
+    // SAFETY: env is the &mut Sink we registered; strings from the FMU are valid.
+    let sink = unsafe { &mut *env.cast::<Sink>() };
+    sink.messages += 1;
+    if status >= FMI2_ERROR {
+        sink.errors += 1;
+    }
+    if category.is_null() {
+        sink.null_category += 1;
+    }
+    if !message.is_null() {
+        // SAFETY: NUL-terminated.
+        sink.last = unsafe { CStr::from_ptr(message) }
+            .to_string_lossy()
+            .into_owned();
+    }
+}
+
+type Plain = unsafe extern "C" fn(*mut c_void, *const c_char, c_int, *const c_char, *const c_char);
+
+fn callbacks(sink: &mut Sink) -> Fmi2CallbackFunctions {
+    // SAFETY: see logger_impl; same argument registers for the fixed part.
+    let logger = unsafe {
+        std::mem::transmute::<
+            Plain,
+            unsafe extern "C" fn(
+                *mut c_void,
+                *const c_char,
+                c_int,
+                *const c_char,
+                *const c_char,
+                ...
+            ),
+        >(logger_impl)
+    };
+    Fmi2CallbackFunctions {
+        logger: Some(logger),
+        allocate_memory: None,
+        free_memory: None,
+        step_finished: None,
+        component_environment: std::ptr::from_mut(sink).cast(),
+    }
+}
+
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        // xorshift64*
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+    fn below(&mut self, n: u64) -> u64 {
+        self.next() % n
+    }
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn value(&mut self, scale: f64) -> f64 {
+        match self.below(20) {
+            0 => f64::NAN,
+            1 => f64::INFINITY,
+            2 => f64::NEG_INFINITY,
+            3 => 0.0,
+            4 => -0.0,
+            5 => 1e300,
+            6 => -1e-300,
+            7 => f64::MIN_POSITIVE,
+            8 => -scale * self.unit(),
+            _ => scale * (2.0 * self.unit() - 0.5),
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum S {
+    Instantiated,
+    Init,
+    Step,
+    Terminated,
+    Error,
+}
+
+fn output_vrs() -> Vec<u32> {
+    VARIABLES
+        .iter()
+        .filter(|v| v.causality == traction_fmu::variables::Causality::Output && v.vr != vr::REGIME)
+        .map(|v| v.vr)
+        .collect()
+}
+
+#[test]
+fn hundred_thousand_random_steps_through_the_c_abi() {
+    let mut sink = Box::new(Sink::default());
+    let cb = callbacks(&mut sink);
+    let name = CString::new("fuzz").unwrap();
+    let g = CString::new(guid()).unwrap();
+    // SAFETY: valid strings and callbacks that outlive the instance.
+    let c = unsafe {
+        fmi2Instantiate(
+            name.as_ptr(),
+            FMI2_COSIMULATION,
+            g.as_ptr(),
+            std::ptr::null(),
+            &cb,
+            0,
+            0,
+        )
+    };
+    assert!(!c.is_null());
+    let outs = output_vrs();
+    let mut values = vec![0.0; outs.len()];
+    let inputs = [
+        (vr::LOAD, 2000.0),
+        (vr::OMEGA1, 800.0),
+        (vr::OMEGA2, 400.0),
+        (vr::SIDE_SLIP_VELOCITY, 2.0),
+        (vr::SKEW_ANGLE, 0.1),
+        (vr::SPIN, 50.0),
+        (vr::INLET_TEMPERATURE, 100.0),
+    ];
+    let params = [
+        (vr::RX1, 0.05),
+        (vr::RY2, 0.1),
+        (vr::MU_USER, 0.2),
+        (vr::TILT_ANGLE, 0.5),
+        (vr::U_REG, 0.1),
+    ];
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut s = S::Instantiated;
+    let mut saved: Fmi2FmuState = std::ptr::null_mut();
+    let (mut steps, mut t) = (0usize, 0.0f64);
+    let (mut n_err, mut n_ok_outputs) = (0usize, 0usize);
+    let mut calls = 0usize;
+    while steps < 100_000 {
+        calls += 1;
+        let before = (sink.messages, sink.errors);
+        let op = rng.below(100);
+        // SAFETY: all pointers below are valid for the lengths passed.
+        let status = unsafe {
+            match (s, op) {
+                (S::Instantiated, 0..=9) => fmi2SetupExperiment(c, 0, 0.0, 0.0, 1, 1e9),
+                (S::Instantiated, 10..=29) | (S::Init, 0..=19) => {
+                    let (r, scale) = params[rng.below(params.len() as u64) as usize];
+                    let x = if rng.below(3) == 0 {
+                        rng.value(scale)
+                    } else {
+                        scale * rng.unit() + 1e-3
+                    };
+                    fmi2SetReal(c, &r, 1, &x)
+                }
+                (S::Instantiated, 30..=39) | (S::Init, 20..=29) => {
+                    let r = [vr::SPIN_SOURCE, vr::SIDE_SLIP_SOURCE, vr::RHEOLOGY]
+                        [rng.below(3) as usize];
+                    let x = rng.below(4) as i32;
+                    fmi2SetInteger(c, &r, 1, &x)
+                }
+                (S::Instantiated, 40..=79) => fmi2EnterInitializationMode(c),
+                (S::Init, 30..=89) => fmi2ExitInitializationMode(c),
+                (S::Step, 0..=29) | (S::Instantiated | S::Init, 80..=99) => {
+                    let (r, scale) = inputs[rng.below(inputs.len() as u64) as usize];
+                    let x = if rng.below(5) == 0 {
+                        rng.value(scale)
+                    } else {
+                        scale * (2.0 * rng.unit() - 0.5)
+                    };
+                    fmi2SetReal(c, &r, 1, &x)
+                }
+                (S::Step, 30..=79) => {
+                    let h = if rng.below(200) == 0 {
+                        rng.value(1.0)
+                    } else {
+                        1e-3 * rng.unit()
+                    };
+                    let st = fmi2DoStep(c, t, h, 1);
+                    if st <= FMI2_WARNING {
+                        t += h;
+                    }
+                    steps += 1;
+                    st
+                }
+                (S::Step | S::Terminated | S::Error, 80..=89) | (S::Error, 0..=29) => {
+                    let st = fmi2GetReal(c, outs.as_ptr(), outs.len(), values.as_mut_ptr());
+                    if st <= FMI2_WARNING {
+                        n_ok_outputs += 1;
+                        assert!(
+                            values.iter().all(|v| v.is_finite()),
+                            "non-finite output with status {st}: {values:?}"
+                        );
+                    }
+                    st
+                }
+                (S::Step, 90..=93) | (S::Terminated, 0..=9) => fmi2GetFMUstate(c, &mut saved),
+                (S::Step | S::Error | S::Terminated, 94..=96) if !saved.is_null() => {
+                    // Round trip through the serialized form, then restore.
+                    let mut size = 0usize;
+                    assert_eq!(fmi2SerializedFMUstateSize(c, saved, &mut size), FMI2_OK);
+                    let mut buf = vec![0 as c_char; size];
+                    assert_eq!(
+                        fmi2SerializeFMUstate(c, saved, buf.as_mut_ptr(), size),
+                        FMI2_OK
+                    );
+                    let mut copy: Fmi2FmuState = std::ptr::null_mut();
+                    assert_eq!(
+                        fmi2DeSerializeFMUstate(c, buf.as_ptr(), size, &mut copy),
+                        FMI2_OK
+                    );
+                    let st = fmi2SetFMUstate(c, copy);
+                    assert_eq!(fmi2FreeFMUstate(c, &mut copy), FMI2_OK);
+                    assert!(copy.is_null());
+                    st
+                }
+                (S::Step, 97) | (S::Error, 30..=39) => fmi2Terminate(c),
+                (_, 98) | (S::Error | S::Terminated, 40..=69) => fmi2Reset(c),
+                (_, 99) => {
+                    // Calls the state machine or the FMU forbids: must be fmi2Error.
+                    let bad = 9999u32;
+                    let x = 1.0;
+                    match rng.below(4) {
+                        0 => fmi2SetReal(c, &bad, 1, &x),
+                        1 => fmi2GetReal(c, &bad, 1, values.as_mut_ptr()),
+                        2 => fmi2SetReal(c, &vr::FX, 1, &x),
+                        _ => fmi2GetReal(c, std::ptr::null(), 3, std::ptr::null_mut()),
+                    }
+                }
+                _ => continue,
+            }
+        };
+        assert_ne!(status, FMI2_FATAL, "fatal status: {}", sink.last);
+        assert_eq!(sink.null_category, 0);
+        if status == FMI2_ERROR {
+            n_err += 1;
+            assert!(
+                sink.errors > before.1,
+                "fmi2Error without a logged error message (op {op}, state {s:?})"
+            );
+            assert!(!sink.last.is_empty());
+        }
+        // Follow the state machine from the FMU's answers.
+        s = match (status, s, op) {
+            // Any error, in any state, leaves the instance in the Error state.
+            (FMI2_ERROR, _, _) => S::Error,
+            (_, S::Instantiated, 40..=79) => S::Init,
+            (_, S::Init, 30..=89) => S::Step,
+            (_, S::Step, 97) | (_, S::Error, 30..=39) => S::Terminated,
+            (_, _, 98) | (_, S::Error | S::Terminated, 40..=69) => {
+                t = 0.0;
+                S::Instantiated
+            }
+            (_, S::Step | S::Error | S::Terminated, 94..=96) => {
+                // Restored a state saved in Step or Terminated.
+                let mut x = 0.0;
+                // SAFETY: valid instance and pointer.
+                if unsafe { fmi2GetRealStatus(c, FMI2_LAST_SUCCESSFUL_TIME, &mut x) } == FMI2_OK {
+                    t = x;
+                }
+                let probe = fmi2DoStep(c, t, 0.0, 1);
+                if probe == FMI2_ERROR {
+                    S::Error
+                } else {
+                    S::Step
+                }
+            }
+            _ => s,
+        };
+        if s == S::Error && rng.below(2) == 0 {
+            // Recover as a master would: reset.
+            assert_eq!(fmi2Reset(c), FMI2_OK);
+            s = S::Instantiated;
+            t = 0.0;
+        }
+    }
+    // SAFETY: saved is NULL or ours; c is ours.
+    unsafe {
+        assert_eq!(fmi2FreeFMUstate(c, &mut saved), FMI2_OK);
+        fmi2FreeInstance(c);
+        fmi2FreeInstance(std::ptr::null_mut());
+    }
+    assert!(
+        n_err > 100 && n_ok_outputs > 1000,
+        "too few errors ({n_err}) or outputs ({n_ok_outputs}) exercised"
+    );
+    eprintln!(
+        "{steps} steps, {calls} calls, {n_err} errors (all logged), {n_ok_outputs} finite output reads"
+    );
+}
+
+#[test]
+fn null_pointers_and_unsupported_functions_are_errors_with_messages() {
+    let mut sink = Box::new(Sink::default());
+    let cb = callbacks(&mut sink);
+    let name = CString::new("nulls").unwrap();
+    let g = CString::new(guid()).unwrap();
+    let wrong = CString::new("{00000000-0000-0000-0000-000000000000}").unwrap();
+    // SAFETY: valid or NULL pointers as the standard allows.
+    unsafe {
+        assert!(
+            fmi2Instantiate(name.as_ptr(), 0, g.as_ptr(), std::ptr::null(), &cb, 0, 0).is_null()
+        );
+        assert!(sink.last.contains("co-simulation"), "{}", sink.last);
+        assert!(
+            fmi2Instantiate(
+                name.as_ptr(),
+                1,
+                wrong.as_ptr(),
+                std::ptr::null(),
+                &cb,
+                0,
+                0
+            )
+            .is_null()
+        );
+        assert!(sink.last.contains("GUID"));
+        assert!(
+            fmi2Instantiate(std::ptr::null(), 1, g.as_ptr(), std::ptr::null(), &cb, 0, 0).is_null()
+        );
+        assert!(
+            fmi2Instantiate(
+                name.as_ptr(),
+                1,
+                g.as_ptr(),
+                std::ptr::null(),
+                std::ptr::null(),
+                0,
+                0
+            )
+            .is_null()
+        );
+        let c = fmi2Instantiate(name.as_ptr(), 1, g.as_ptr(), std::ptr::null(), &cb, 0, 1);
+        assert!(!c.is_null());
+        assert_eq!(
+            fmi2SetupExperiment(std::ptr::null_mut(), 0, 0.0, 0.0, 0, 0.0),
+            FMI2_ERROR
+        );
+        let e0 = sink.errors;
+        assert_eq!(
+            fmi2GetDirectionalDerivative(
+                c,
+                std::ptr::null(),
+                0,
+                std::ptr::null(),
+                0,
+                std::ptr::null(),
+                std::ptr::null_mut()
+            ),
+            FMI2_ERROR
+        );
+        assert_eq!(
+            fmi2SetRealInputDerivatives(c, std::ptr::null(), 0, std::ptr::null(), std::ptr::null()),
+            FMI2_ERROR
+        );
+        assert_eq!(
+            fmi2GetRealOutputDerivatives(
+                c,
+                std::ptr::null(),
+                0,
+                std::ptr::null(),
+                std::ptr::null_mut()
+            ),
+            FMI2_ERROR
+        );
+        assert_eq!(fmi2CancelStep(c), FMI2_ERROR);
+        let mut st = 0;
+        assert_eq!(fmi2GetStatus(c, FMI2_DO_STEP_STATUS, &mut st), FMI2_ERROR);
+        let mut i = 0;
+        assert_eq!(
+            fmi2GetIntegerStatus(c, FMI2_DO_STEP_STATUS, &mut i),
+            FMI2_ERROR
+        );
+        let mut sp: Fmi2String = std::ptr::null();
+        assert_eq!(
+            fmi2GetStringStatus(c, FMI2_PENDING_STATUS, &mut sp),
+            FMI2_ERROR
+        );
+        assert_eq!(sink.errors, e0 + 7, "each unsupported call logs one error");
+        assert!(sink.last.contains("not supported"));
+        // '%' in messages is escaped for printf-style loggers.
+        let pct = CString::new("100%").unwrap();
+        let cats = [pct.as_ptr()];
+        assert_eq!(fmi2SetDebugLogging(c, 1, 1, cats.as_ptr()), FMI2_ERROR);
+        assert!(sink.last.contains("100%%"), "{}", sink.last);
+        let ok = CString::new("logAll").unwrap();
+        let cats = [ok.as_ptr()];
+        assert_eq!(fmi2SetDebugLogging(c, 1, 1, cats.as_ptr()), FMI2_OK);
+        // Empty array calls are fine with NULL pointers.
+        assert_eq!(
+            fmi2SetReal(c, std::ptr::null(), 0, std::ptr::null()),
+            FMI2_OK
+        );
+        assert_eq!(
+            fmi2GetString(c, std::ptr::null(), 0, std::ptr::null_mut()),
+            FMI2_OK
+        );
+        let one = vr::FX;
+        let mut sp = std::ptr::null();
+        assert_eq!(fmi2GetString(c, &one, 1, &mut sp), FMI2_ERROR);
+        assert_eq!(CStr::from_ptr(fmi2GetVersion()).to_str().unwrap(), "2.0");
+        assert_eq!(
+            CStr::from_ptr(fmi2GetTypesPlatform()).to_str().unwrap(),
+            "default"
+        );
+        // Terminate frees nothing: outputs are still readable afterwards.
+        assert_eq!(fmi2Reset(c), FMI2_OK);
+        assert_eq!(fmi2EnterInitializationMode(c), FMI2_OK);
+        assert_eq!(fmi2ExitInitializationMode(c), FMI2_OK);
+        assert_eq!(fmi2DoStep(c, 0.0, 0.1, 1), FMI2_OK);
+        assert_eq!(fmi2Terminate(c), FMI2_OK);
+        let mut x = f64::NAN;
+        assert_eq!(fmi2GetReal(c, &vr::P0, 1, &mut x), FMI2_OK);
+        assert!(x > 1e8);
+        let mut b = 1;
+        assert_eq!(fmi2GetBooleanStatus(c, FMI2_TERMINATED, &mut b), FMI2_OK);
+        assert_eq!(b, 0);
+        fmi2FreeInstance(c);
+    }
+}
+
+#[test]
+fn instances_are_independent_across_threads() {
+    let run = |omega1: f64| {
+        let mut sink = Box::new(Sink::default());
+        let cb = callbacks(&mut sink);
+        let name = CString::new(format!("i{omega1}")).unwrap();
+        let g = CString::new(guid()).unwrap();
+        // SAFETY: valid pointers for the instance's lifetime.
+        unsafe {
+            let c = fmi2Instantiate(name.as_ptr(), 1, g.as_ptr(), std::ptr::null(), &cb, 0, 0);
+            assert!(!c.is_null());
+            let vrs = [vr::OMEGA1, vr::OMEGA2];
+            let v = [omega1, 270.0];
+            assert_eq!(fmi2SetReal(c, vrs.as_ptr(), 2, v.as_ptr()), FMI2_OK);
+            assert_eq!(fmi2EnterInitializationMode(c), FMI2_OK);
+            assert_eq!(fmi2ExitInitializationMode(c), FMI2_OK);
+            let mut fx = 0.0;
+            for k in 0..10_000 {
+                assert_eq!(fmi2DoStep(c, f64::from(k) * 1e-4, 1e-4, 1), FMI2_OK);
+                assert_eq!(fmi2GetReal(c, &vr::FX, 1, &mut fx), FMI2_OK);
+            }
+            fmi2FreeInstance(c);
+            fx
+        }
+    };
+    let sequential = [run(600.0), run(590.0)];
+    let a = std::thread::spawn(move || run(600.0));
+    let b = std::thread::spawn(move || run(590.0));
+    let threaded = [a.join().unwrap(), b.join().unwrap()];
+    assert_eq!(sequential, threaded);
+    assert_ne!(sequential[0], sequential[1]);
+}
