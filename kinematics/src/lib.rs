@@ -74,7 +74,9 @@
 //! ```
 #![forbid(unsafe_code)]
 
-use nalgebra::Vector3;
+/// The 3-vector type of the public API (re-exported from nalgebra so that users
+/// need not depend on it directly).
+pub use nalgebra::Vector3;
 
 mod toroidal;
 pub use toroidal::{HalfToroidalVariator, VariatorState};

@@ -61,8 +61,8 @@ fn c2(case: &Case) -> f64 {
         case.ry_mm * 1e-3,
         case.e_mm * 1e-3,
     )
-    .unwrap();
-    spin_factor(w, case.c_table_2_2, case.k).unwrap()
+    .expect("valid Table 2-4 geometry");
+    spin_factor(w, case.c_table_2_2, case.k).expect("valid C and k")
 }
 
 #[test]
