@@ -34,9 +34,12 @@
 //!
 //! * In g (= a/b for a ≤ b, = b/a for a > b): piecewise linear between the tabulated
 //!   rows, separately in each half of the table (at a/b = 1 both halves coincide).
-//! * In ν: quadratic Lagrange interpolation of **1/C** through ν = 0, 0.25, 0.5.
-//!   1/C rather than C because Kalker's small-a/b asymptote C11 = π²/(4(1−ν)) makes
-//!   1/C11 exactly linear in ν. ν outside [0, 0.5] is an error (no asymptote).
+//! * In ν: quadratic Lagrange interpolation through ν = 0, 0.25, 0.5, of **1/C**
+//!   for C11, C22, C23 (Kalker's small-a/b asymptote C11 = π²/(4(1−ν)) makes 1/C11
+//!   exactly linear in ν) and of **C** for C33 (its 1/C varies by a factor 3.5–4
+//!   between ν = 0 and 0.5 at large a/b, and the quadratic in 1/C reversed the order
+//!   of the rows a/b = 5 and 10 near ν = 0.07 — found by the property test).
+//!   ν outside [0, 0.5] is an error (no asymptote).
 //!
 //! ## Asymptotes outside the table (Kalker 1990; same formulas in CONTACT)
 //!
@@ -173,9 +176,9 @@ pub fn table_entry(a_gt_b: bool, row: usize, c: Coefficient, nu_index: usize) ->
         .filter(|_| nu_index < 3)
 }
 
-fn interp_nu(values: [f64; 3], nu: f64) -> f64 {
-    // Quadratic Lagrange interpolation of 1/C through ν = 0, 0.25, 0.5.
-    let mut inv = 0.0;
+fn interp_nu(values: [f64; 3], nu: f64, reciprocal: bool) -> f64 {
+    // Quadratic Lagrange interpolation through ν = 0, 0.25, 0.5, of 1/C or of C.
+    let mut sum = 0.0;
     for (i, (nu_i, c_i)) in NU.iter().zip(values).enumerate() {
         let mut l = 1.0;
         for (j, nu_j) in NU.iter().enumerate() {
@@ -183,15 +186,16 @@ fn interp_nu(values: [f64; 3], nu: f64) -> f64 {
                 l *= (nu - nu_j) / (nu_i - nu_j);
             }
         }
-        inv += l / c_i;
+        sum += l * if reciprocal { 1.0 / c_i } else { c_i };
     }
-    1.0 / inv
+    if reciprocal { 1.0 / sum } else { sum }
 }
 
 fn table_value(a_gt_b: bool, g: f64, c: Coefficient, nu: f64) -> f64 {
     let t = if a_gt_b { &TABLE_A_GT_B } else { &TABLE_A_LE_B };
     let col = column(c);
-    let at_row = |r: usize| interp_nu([t[r][col], t[r][col + 1], t[r][col + 2]], nu);
+    let reciprocal = c != Coefficient::C33;
+    let at_row = |r: usize| interp_nu([t[r][col], t[r][col + 1], t[r][col + 2]], nu, reciprocal);
     // g in [0.1, 1.0]: rows r (g = 0.1(r+1)).
     let x = (g * 10.0 - 1.0).clamp(0.0, 9.0);
     let r0 = (x.floor() as usize).min(8);
