@@ -8,6 +8,8 @@
 //! mm (Re in [11.45, 11.55)); 150.4 mm gives Re = 11.54 mm.
 //!
 //! Material: steel (AISI-O1), E = 210 GPa, ν = 0.3, `E' = 2/((1−ν²)/E·2)`.
+// Helpers outside #[test] functions unwrap too: any failure is a test failure.
+#![allow(clippy::unwrap_used)]
 
 use traction_hertz::{Body, Geometry, STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS, shape_factors};
 use traction_tests::rel_diff;
