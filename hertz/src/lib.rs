@@ -164,7 +164,10 @@ pub enum Method {
     /// solve). Measured maximum relative error against [`Method::Exact`]
     /// over 0.05 ≤ k ≤ 20 at a fixed load (asserted in the tests with a
     /// small margin): k 7.2 %, a and b 4.8 %, P0 2.3 %, approach 5.4 %.
-    /// At k = 1 (equal curvatures) it gives k = 1.0339, not 1.
+    /// The largest errors are at the ends of the range (k = 0.05 and 20:
+    /// k 7.2 %, P0 2.3 %) and at k = 1, where the fit gives k = 1.0339 and
+    /// K = 1.5277 (π/2 − 2.7 %): P0 −2.2 %, approach −5.4 %. Between
+    /// k = 0.2 and 0.5, and 2 and 5, the errors are below 0.5 %.
     HamrockBrewe,
 }
 
