@@ -1,21 +1,77 @@
-//! `traction jt` (in progress; the owning issue fills this in).
+//! `traction jt`: the Johnson & Tevaarwerk model in the dimensionless J groups.
+//!
+//! Input columns `k,J1,J2,J3`, optionally `dX` (spin-pole offset) and, for
+//! `--model viscoelastic`, `D` (Deborah number) and optionally `Z0`
+//! (sinh reference stress τ0/τ̄, default 1). Output: the input columns
+//! followed by `J4,J5,J6,J7`.
 
-use clap::Args;
+use clap::{Args, ValueEnum};
+use traction_rheology::{Accuracy, Inputs, Model, evaluate};
 
 use crate::error::CliError;
+use crate::table::{Table, TableWriter, fmt_f64, output_headers};
+
+/// Constitutive model selected on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum JtModel {
+    /// Elastic/perfectly plastic (Prandtl–Reuss), the report's printed theory.
+    ElasticPlastic,
+    /// Rigid/plastic (Wernitz, Magi).
+    RigidPlastic,
+    /// Viscoelastic sinh law with Deborah number `D` (column) and the limit as a cap.
+    Viscoelastic,
+}
 
 /// Arguments of `traction jt`.
 #[derive(Debug, Args)]
 pub struct JtArgs {
-    /// Input CSV (`-` for stdin).
+    /// Input CSV (`-` for stdin) with columns k,J1,J2,J3[,dX][,D][,Z0].
     #[arg(long, default_value = "-")]
     pub input: String,
-    /// Output CSV (`-` for stdout).
+    /// Output CSV (`-` for stdout): the input columns followed by J4,J5,J6,J7.
     #[arg(long, default_value = "-")]
     pub output: String,
+    /// Constitutive model.
+    #[arg(long, value_enum, default_value_t = JtModel::ElasticPlastic)]
+    pub model: JtModel,
+    /// Target absolute accuracy of J4, J5, J6 (1e-9 ..= 0.1).
+    #[arg(long, default_value_t = 1e-4)]
+    pub tol: f64,
 }
 
 /// Run the subcommand.
-pub fn run(_args: JtArgs) -> Result<(), CliError> {
-    Err(CliError::Usage("`traction jt` is not implemented yet".into()))
+pub fn run(args: JtArgs) -> Result<(), CliError> {
+    let acc = Accuracy::new(args.tol).map_err(|e| CliError::Usage(format!("--tol: {e}")))?;
+    let t = Table::read(&args.input)?;
+    let mut need = vec!["k", "J1", "J2", "J3"];
+    if args.model == JtModel::Viscoelastic {
+        need.push("D");
+    }
+    t.require(&need)?;
+    let mut out = Vec::with_capacity(t.len());
+    for row in 0..t.len() {
+        let k = t.f64(row, "k")?;
+        let j1 = t.f64(row, "J1")?;
+        let j2 = t.f64(row, "J2")?;
+        let j3 = t.f64(row, "J3")?;
+        let dx = t.opt_f64(row, "dX")?.unwrap_or(0.0);
+        let model = match args.model {
+            JtModel::ElasticPlastic => Model::ElasticPlastic,
+            JtModel::RigidPlastic => Model::RigidPlastic,
+            JtModel::Viscoelastic => Model::Viscoelastic {
+                deborah: t.f64(row, "D")?,
+                z0: t.opt_f64(row, "Z0")?.unwrap_or(1.0),
+            },
+        };
+        let inp = Inputs::with_offset(k, j1, j2, j3, dx).map_err(|e| t.row_error(row, e))?;
+        let o = evaluate(&inp, model, acc).map_err(|e| t.row_error(row, e))?;
+        out.push([o.j4, o.j5, o.j6, o.j7]);
+    }
+    let mut w = TableWriter::create(&args.output, &output_headers(&t, &["J4", "J5", "J6", "J7"]))?;
+    for (row, vals) in out.iter().enumerate() {
+        let mut cells: Vec<String> = t.rows[row].clone();
+        cells.extend(vals.iter().map(|v| fmt_f64(*v)));
+        w.write_row(&cells)?;
+    }
+    w.finish()
 }

@@ -26,7 +26,7 @@ use crate::quad;
 /// Number of sample intervals in s ∈ [−π/2, π/2] used to bracket yield points.
 const M_SAMPLE: usize = 32;
 /// Largest number of RK4 sub-steps per step before the quasi-steady branch.
-const MAX_SUB: usize = 64;
+const MAX_SUB: usize = 16;
 /// Largest number of elastic ↔ plastic switches per strip.
 const MAX_SWITCH: usize = 16;
 /// RK4 stability margin on κ·h (the real stability limit is 2.78).
@@ -192,8 +192,7 @@ impl Strip {
     }
 
     /// One RK4 step of length h; (c2, s2) = (cos h/2, sin h/2).
-    fn rk4(&self, p: &PState, c2: f64, s2: f64) -> PState {
-        let h = 2.0 * s2.atan2(c2);
+    fn rk4(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
         let (k1x, k1y, a1) = self.deriv(p.sn, p.cs, p.nx, p.ny);
@@ -203,7 +202,7 @@ impl Strip {
         let h6 = h / 6.0;
         let nx = p.nx + h6 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
         let ny = p.ny + h6 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
-        let r = nx.hypot(ny);
+        let r = (nx * nx + ny * ny).sqrt();
         let mut acc = p.acc;
         acc.ix += h6 * (a1.ix + 2.0 * a2.ix + 2.0 * a3.ix + a4.ix);
         acc.iy += h6 * (a1.iy + 2.0 * a2.iy + 2.0 * a3.iy + a4.iy);
@@ -238,23 +237,23 @@ impl Strip {
     }
 
     /// Advance the plastic state by h (cos/sin of h/2 given).
-    fn advance(&self, p: &PState, c2: f64, s2: f64) -> PState {
-        let h = 2.0 * s2.atan2(c2);
+    fn advance(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
-        let v0 = self.a.hypot(self.vy(self.c * p.sn));
-        let v1 = self.a.hypot(self.vy(self.c * s1));
-        let kh = (2.0 / 3.0) * v0.max(v1) * h;
+        let (vy0, vy1) = (self.vy(self.c * p.sn), self.vy(self.c * s1));
+        let v2 = self.a * self.a + vy0.abs().max(vy1.abs()).powi(2);
+        let kh = (2.0 / 3.0) * v2.sqrt() * h;
         if kh.is_nan() || kh <= KAPPA_H {
-            return self.rk4(p, c2, s2);
+            return self.rk4(p, h, c2, s2);
         }
         let m = (kh / KAPPA_H).ceil();
         if m <= MAX_SUB as f64 {
             let m = m as usize;
-            let (s2s, c2s) = (0.5 * h / m as f64).sin_cos();
+            let hs = h / m as f64;
+            let (s2s, c2s) = (0.5 * hs).sin_cos();
             let mut q = *p;
             for _ in 0..m {
-                q = self.rk4(&q, c2s, s2s);
+                q = self.rk4(&q, hs, c2s, s2s);
             }
             return q;
         }
@@ -305,7 +304,7 @@ impl Strip {
             acc: StripSums::default(),
         };
         for i in 0..nsteps {
-            let mut q = self.advance(&p, c2, s2);
+            let mut q = self.advance(&p, h, c2, s2);
             if i + 1 == nsteps {
                 q.sn = 1.0;
                 q.cs = 0.0;
@@ -325,7 +324,7 @@ impl Strip {
                             0.5 * (tl + th)
                         };
                         let (st, ct) = (0.5 * t).sin_cos();
-                        let r = self.advance(&p, ct, st);
+                        let r = self.advance(&p, t, ct, st);
                         let gr = self.g(r.sn, r.cs, r.nx, r.ny);
                         best = r;
                         if gr.abs() < 1e-13 {

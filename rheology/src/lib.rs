@@ -269,13 +269,16 @@ impl Accuracy {
 
     /// The discretisation of the elastic/plastic integrator for this target.
     pub fn resolution(&self) -> Resolution {
-        let lt = -self.tol.log10(); // 1 .. 9
-        // Calibrated in tests/tests (convergence study): error ~ C·h^p.
-        let panels = (2.0_f64.powf((lt - 2.0).max(0.0) * 0.75)).ceil() as usize;
+        // Calibrated by the convergence study (rheology/tests/convergence.rs):
+        // the error is dominated by the Y quadrature across strips where the
+        // flow pattern changes (second order in the panel width) and by RK4
+        // in s (fourth order); panels ∝ tol^(-1/2), s-step ∝ panel width.
+        let p = (10.0 * (1e-3 / self.tol).sqrt()).ceil();
+        let panels = p.clamp(2.0, 400.0) as usize;
         Resolution {
-            y_panels: panels.clamp(1, 256),
+            y_panels: panels,
             y_points: 8,
-            s_step: (0.6 * 10f64.powf(-(lt - 2.0).max(0.0) * 0.25)).clamp(0.003, 0.6),
+            s_step: (0.5 / panels as f64).max(0.002),
         }
     }
 }

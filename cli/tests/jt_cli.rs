@@ -1,0 +1,92 @@
+//! CLI tests of `traction jt` (batch evaluation of the J+T model).
+#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+fn run(args: &[&str], stdin: &str) -> (bool, String, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_traction"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(stdin.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    (
+        out.status.success(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+#[test]
+fn zero_spin_row_reproduces_equation_22_and_keeps_columns() {
+    let (ok, out, err) = run(
+        &["jt", "--input", "-", "--output", "-"],
+        "k,J1,J2,J3,dX,note_free\n1,1.5,0,0,0.1,7\n",
+    );
+    assert!(ok, "{err}");
+    let mut lines = out.lines();
+    assert_eq!(lines.next().unwrap(), "k,J1,J2,J3,dX,note_free,J4,J5,J6,J7");
+    let cells: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(&cells[..6], &["1", "1.5", "0", "0", "0.1", "7"]);
+    let j4: f64 = cells[6].parse().unwrap();
+    // App. V eq. 22 at S = 1: ψ = (2/π)(π/4 + 1/2) = 0.5 + 1/π (exact; the
+    // zero-spin path is the closed form): 1e-12.
+    assert!(
+        (j4 - (0.5 + 1.0 / std::f64::consts::PI)).abs() < 1e-12,
+        "{j4}"
+    );
+    let j7: f64 = cells[9].parse().unwrap();
+    assert!((j7 - 1.5 * j4).abs() < 1e-12);
+}
+
+#[test]
+fn models_and_spin_rows() {
+    let input = "k,J1,J2,J3,D\n1,1,0,2,1e9\n5,0,3.36839582,25.8161723,1e9\n";
+    for model in ["elastic-plastic", "rigid-plastic", "viscoelastic"] {
+        let (ok, out, err) = run(&["jt", "--model", model, "--tol", "1e-3"], input);
+        assert!(ok, "{model}: {err}");
+        assert_eq!(out.lines().count(), 3);
+        for l in out.lines().skip(1) {
+            for c in l.split(',') {
+                let v: f64 = c.parse().unwrap();
+                assert!(v.is_finite(), "{model}: {l}");
+            }
+        }
+    }
+}
+
+#[test]
+fn errors_name_row_and_column() {
+    let (ok, _, err) = run(&["jt"], "k,J1,J2,J3\n1,1,0,0\n1,x,0,0\n");
+    assert!(!ok);
+    assert!(err.contains("row 2") && err.contains("`J1`"), "{err}");
+    let (ok, _, err) = run(&["jt"], "k,J1,J2,J3\n1,1,0,0\n500,1,0,0\n");
+    assert!(!ok);
+    assert!(
+        err.contains("row 2") && err.contains("aspect ratio"),
+        "{err}"
+    );
+    let (ok, _, err) = run(&["jt"], "k,J1,J3\n1,1,0\n");
+    assert!(!ok && err.contains("J2"), "{err}");
+    let (ok, _, err) = run(
+        &["jt", "--model", "viscoelastic"],
+        "k,J1,J2,J3,D\n1,1,0,0,-1\n",
+    );
+    assert!(
+        !ok && err.contains("Deborah") && err.contains("row 1"),
+        "{err}"
+    );
+    let (ok, _, err) = run(&["jt", "--tol", "0"], "k,J1,J2,J3\n1,1,0,0\n");
+    assert!(!ok && err.contains("tol"), "{err}");
+    let (ok, _, err) = run(&["jt"], "k,J1,J2,J3\n1,inf,0,0\n");
+    assert!(!ok && err.contains("J1"), "{err}");
+}
