@@ -415,6 +415,7 @@ pub(crate) struct Scaled {
     pub j3: f64,
     pub q2: f64,
     pub k: f64,
+    pub dx: f64,
 }
 
 impl Scaled {
@@ -426,6 +427,7 @@ impl Scaled {
             j3,
             q2: j3 / k,
             k,
+            dx,
         }
     }
 
@@ -465,8 +467,11 @@ pub(crate) fn contact_integral(
     }
     let j4 = sx / PI;
     let j5 = sy / PI;
-    // J6 = T/(μN√(ab)) = (1/(π√k))∫∫(Zy·X − k·Zx·Y) dX dY.
-    let j6 = (sxy - sc.k * syx) / (PI * sc.k.sqrt());
+    // J6 = T/(μN√(ab)) = (1/(π√k))∫∫(Zy·(X+ΔX) − k·Zx·Y) dX dY: the torque
+    // about the spin pole, so that J7 = J1·J4 + J2·J5 + J3·J6 is the
+    // dissipation also for ΔX ≠ 0 (for ΔX = 0 it is the torque about the
+    // contact centre, App. IV eq. 16).
+    let j6 = (sxy + sc.dx * sy - sc.k * syx) / (PI * sc.k.sqrt());
     (j4, j5, j6)
 }
 

@@ -14,6 +14,9 @@
 //! * ΔX = δ/a, spin-pole offset (App. IV; the report kept it zero).
 //! * J4 = Fx/(μN), J5 = Fy/(μN), J6 = T/(μN√(ab)), J7 = J1·J4 + J2·J5 + J3·J6
 //!   (App. IV eqs. 15–17, App. V eq. 21), loss factor LF = J7/J4 (App. IV eq. 18).
+//!   T is taken about the spin pole (x = −δ); with ΔX = 0 (all the report's
+//!   results) that is the contact centre. Only then is J7 the dissipation
+//!   for ΔX ≠ 0: the torque about the centre is J6 − ΔX·J5/√k.
 //! * Z = τ/τ̄, τ̄ = μN/(πab) (App. IV eq. 10); S = (2/3)J1/√k, ε = J1/J3.
 //!
 //! ## Equations
@@ -37,7 +40,8 @@
 //! condition must include dL/dX, which is what this crate solves.
 //!
 //! Forces: J4 = (1/π)∫∫Zx dX dY, J5 = (1/π)∫∫Zy dX dY,
-//! J6 = (1/(π√k))∫∫(Zy·X − k·Zx·Y) dX dY.
+//! J6 = (1/(π√k))∫∫(Zy·(X+ΔX) − k·Zx·Y) dX dY, so that
+//! J7 = J1·J4 + J2·J5 + J3·J6 = (√k/π)∫∫Z·v dX dY (the dissipation).
 //! **J6 prefactor.** App. IV eq. 16 prints (√k/π); with T = ∫(τy·x − τx·y)dA,
 //! x = aX, y = bY, dA = ab dX dY, T/(μN√(ab)) has the prefactor 1/(π√k). Only
 //! the latter satisfies the power balance J7 = J1·J4 + J2·J5 + J3·J6 =

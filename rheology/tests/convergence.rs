@@ -1,0 +1,102 @@
+//! Convergence study of the elastic/plastic strip integrator: observed order
+//! in the s-step (plastic segments, RK4) and in the Y panel width, and the
+//! accuracy parameter's promise (error ≤ tol against a converged solution).
+#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+
+use traction_rheology::{Accuracy, Inputs, Outputs, Resolution, elastic_plastic};
+
+fn err(a: &Outputs, b: &Outputs) -> f64 {
+    (a.j4 - b.j4)
+        .abs()
+        .max((a.j5 - b.j5).abs())
+        .max((a.j6 - b.j6).abs())
+}
+
+fn run(i: &Inputs, p: usize, h: f64) -> Outputs {
+    elastic_plastic(
+        i,
+        &Resolution {
+            y_panels: p,
+            y_points: 8,
+            s_step: h,
+        },
+    )
+    .unwrap()
+}
+
+#[test]
+fn observed_order_in_s_step_and_y_panels() {
+    let i = Inputs::new(1.0, 1.5, 0.3, 2.0).unwrap();
+    // (a) s-step at fixed Y rule: reference h = 0.4/64.
+    let p = 6;
+    let r = run(&i, p, 0.4 / 64.0);
+    let hs = [0.4, 0.2, 0.1, 0.05];
+    let e: Vec<f64> = hs.iter().map(|&h| err(&run(&i, p, h), &r)).collect();
+    println!("s-step   error      observed order");
+    for j in 0..hs.len() {
+        let ord = if j > 0 {
+            (e[j - 1] / e[j]).log2()
+        } else {
+            f64::NAN
+        };
+        println!("{:7.4}  {:9.2e}  {ord:5.2}", hs[j], e[j]);
+    }
+    // RK4 is fourth order; event location and the elastic closed forms add
+    // nothing. Require an observed order ≥ 3 over the last two halvings.
+    assert!((e[1] / e[3]).log2() / 2.0 >= 3.0, "{e:?}");
+
+    // (b) Y panels at a fine s-step: reference 128 panels. The moderate case
+    // has no change of flow pattern across Y (spectral convergence); the
+    // high-spin case (App. VI trace 79072704) has strips where unloading
+    // appears, i.e. kinks in Y.
+    let h = 0.01;
+    for (name, i) in [
+        ("moderate spin", i),
+        (
+            "high spin k=5",
+            Inputs::new(5.0, 0.0, 3.36839582, 25.8161723).unwrap(),
+        ),
+    ] {
+        let r = run(&i, 128, h);
+        let ps = [4usize, 8, 16, 32];
+        let e: Vec<f64> = ps.iter().map(|&p| err(&run(&i, p, h), &r)).collect();
+        println!("{name}: panels   error      observed order");
+        for j in 0..ps.len() {
+            let ord = if j > 0 {
+                (e[j - 1] / e[j]).log2()
+            } else {
+                f64::NAN
+            };
+            println!("{:6}  {:9.2e}  {ord:5.2}", ps[j], e[j]);
+        }
+        // Across kinks Gauss–Legendre converges at (at least) second order in
+        // the panel width; require ≥ 1.5 on average over the three halvings
+        // (or round-off level).
+        assert!((e[0] / e[3]).log2() / 3.0 >= 1.5 || e[3] < 1e-12, "{e:?}");
+    }
+}
+
+#[test]
+fn accuracy_parameter_is_met() {
+    // Error against a converged solution (128 panels, h = 0.004; its own error
+    // is < 1e-6 by the study above) must be below tol for tol = 1e-2, 1e-3, 1e-4
+    // on cases from slip-dominated to high spin and side slip.
+    let cases = [
+        (1.0, 1.5, 0.0, 2.0),
+        (5.0, 0.0, 3.37, 25.8),
+        (0.2, 2.0, 1.0, 5.0),
+        (8.0, 1.0, 0.5, 3.0),
+        (1.0, 20.0, 0.0, 100.0),
+        (0.5, 10.0, 2.0, 50.0),
+    ];
+    for &(k, j1, j2, j3) in &cases {
+        let i = Inputs::new(k, j1, j2, j3).unwrap();
+        let r = run(&i, 128, 0.004);
+        for tol in [1e-2, 1e-3, 1e-4] {
+            let o = elastic_plastic(&i, &Accuracy::new(tol).unwrap().resolution()).unwrap();
+            let e = err(&o, &r);
+            println!("k={k} J=({j1},{j2},{j3}) tol={tol:.0e}: error {e:.2e}");
+            assert!(e <= tol, "tol {tol}: error {e}");
+        }
+    }
+}
