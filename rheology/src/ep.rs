@@ -12,7 +12,7 @@
 //!   dn/ds = (2/3)(v·t)·t, t ⟂ n (Prandtl–Reuss consistency; the 1/√(c−X)
 //!   singularity of dθ/dX is absorbed by dX/ds = c·cos s). Classical RK4 on
 //!   (n, ∫Zx dX, ∫Zy dX, ∫Zy X dX); steps are sub-divided where the relaxation
-//!   rate (2/3)|v| makes RK4 unstable, and where it exceeds 64 sub-steps per
+//!   rate (2/3)|v| makes RK4 unstable, and where it exceeds 16 sub-steps per
 //!   step n follows its quasi-steady solution θ = α − asin(α'/κ) (the
 //!   rigid/plastic direction with the first elastic lag), integrated by
 //!   Simpson's rule;
@@ -145,11 +145,13 @@ impl Strip {
         let mut x = hi;
         for _ in 0..100 {
             let (f, fp) = self.f_el(x0, z0, x);
+            if f.abs() <= ftol {
+                // Converged (from either side: Newton often approaches the
+                // root from below, where the bracket would not shrink).
+                return x;
+            }
             if f >= 0.0 || f.is_nan() {
                 hi = x;
-                if f <= ftol {
-                    return x;
-                }
             } else {
                 lo = x;
             }

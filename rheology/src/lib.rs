@@ -79,16 +79,22 @@
 //!   rolling direction" tables are J5(0, −J2, J3).
 //!
 //! ## Kalker's simplified theory (FASTSIM)
-//! The same elastic/plastic model is FASTSIM with one flexibility
-//! L_K = h/Ḡ (m/Pa) for all directions, creepages ξ = ΔU/U, η = ΔV/U, spin
-//! φ = ω/U (1/m), and the ellipsoidal traction bound
-//! (3/2)·μN/(πab)·√(1−x²/a²−y²/b²) (= μ·P(x,y)). In FASTSIM's own units
-//! (stresses/μP0... ) the J groups are the creepages over the stiffness ratio:
-//! J1 = ξ·√(ab)/(L_K τ̄), J2 = η·√(ab)/(L_K τ̄), J3 = φ·ab/(L_K τ̄), τ̄ = μN/(πab);
-//! conversely ξ = J1·L_K τ̄/√(ab). FASTSIM's forces Fx, Fy and moment Mz map to
-//! J4 = Fx/(μN), J5 = Fy/(μN), J6 = Mz/(μN√(ab)). Sign conventions differ
-//! between codes (FASTSIM usually defines creepage as the rigid slip opposing
-//! the traction); here ΔU > 0 gives J4 > 0.
+//! The elastic/plastic model is Kalker's simplified theory with one
+//! flexibility for all directions and an ellipsoidal traction bound. Along the
+//! rolling direction FASTSIM integrates dp/dx = (slip)/L_K with the surface
+//! traction p, flexibility L_K (m³/N) and creepages; here
+//! dτ/dx = (Ḡ/h)·(γ̇·h/U), so
+//! * flexibility L_K = h/Ḡ (film thickness over the effective shear modulus);
+//! * creepages ξ = ΔU/U, η = ΔV/U, spin creepage φ = ω/U (1/m);
+//! * traction bound μ·P(x, y) = (3/2)·μN/(πab)·√(1−x²/a²−y²/b²) = (3/2)τ̄√(…);
+//! * J1 = ξ·√(ab)/(L_K τ̄), J2 = η·√(ab)/(L_K τ̄), J3 = φ·ab/(L_K τ̄) with
+//!   τ̄ = μN/(πab); conversely ξ = J1·L_K·τ̄/√(ab), φ = J3·L_K·τ̄/(ab);
+//! * Fx = J4·μN, Fy = J5·μN, Mz = J6·μN√(ab) (about the spin pole).
+//!
+//! FASTSIM usually takes three flexibilities L1, L2, L3 fitted to Kalker's
+//! linear theory and defines creepage as the rigid slip of body 1 against body
+//! 2 with the traction opposing it; to compare, set L1 = L2 = L3 = h/Ḡ and mind
+//! the sign (here ΔU > 0 gives J4 > 0, and γ̇y = (ΔV + ω(x+δ))/h).
 //!
 //! ## Accuracy
 //! [`Accuracy`] sets the target absolute error of J4, J5, J6; tests check it
