@@ -61,6 +61,9 @@
 //!   number D = ηU/(Ḡa) and reference stress Z0 = τ0/τ̄, with the limit L kept
 //!   as a cap; D → ∞ gives the elastic/plastic model exactly (the viscous
 //!   term vanishes), Z0 → ∞ the linear Maxwell fluid. See [`viscoelastic`].
+//! * Other property variations (App. IV eq. 8: G pressure-proportional,
+//!   limit constant): [`elastic_plastic_with`] and [`Properties`], solved by a
+//!   Richardson-extrapolated grid scheme ([`props`], ≈ 1e-4, milliseconds).
 //! * Closed forms for zero spin: [`closed::slip_traction`] (eq. 22),
 //!   [`closed::combined_slip_traction`] (eq. 23),
 //!   [`closed::rigid_plastic_slip_traction`] (eq. 24).
@@ -118,11 +121,13 @@
 
 pub mod closed;
 mod ep;
+pub mod props;
 mod quad;
 mod rigid;
 mod visco;
 
 pub use ep::Resolution;
+pub use props::{Limit, Modulus, Properties};
 
 /// Smallest supported aspect ratio k.
 pub const K_MIN: f64 = 0.01;
@@ -389,5 +394,38 @@ pub fn viscoelastic(
     };
     let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx);
     let (j4, j5, j6) = visco::solve(&sc, &res, nsteps, z0, deborah);
+    Ok(finish(inp, j4, j5, j6))
+}
+
+/// Elastic/plastic model with any of App. IV's property variations
+/// ([`Properties`]). The default combination uses the strip integrator
+/// ([`evaluate`]); the others a Richardson-extrapolated grid scheme whose
+/// error is ≈ 1e-4 (cells per strip 400/800 for tol ≥ 1e-4, 1600/3200
+/// below; see [`props`]). Costs milliseconds per evaluation.
+pub fn elastic_plastic_with(
+    inp: &Inputs,
+    props: Properties,
+    acc: Accuracy,
+) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    if props == Properties::default() {
+        return evaluate(inp, Model::ElasticPlastic, acc);
+    }
+    let n = if acc.tol >= 1e-4 { 400 } else { 1600 };
+    grid_reference(inp, props, n)
+}
+
+/// The grid scheme of [`props`] for any property combination, with `cells`
+/// and 2·`cells` cells per strip (and as many strips), Richardson-extrapolated
+/// (clamped to 10..=20000). Independent of the strip integrator; used to
+/// cross-check it.
+pub fn grid_reference(
+    inp: &Inputs,
+    props: Properties,
+    cells: usize,
+) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx);
+    let (j4, j5, j6) = props::solve(&sc, props, cells.clamp(10, 20000));
     Ok(finish(inp, j4, j5, j6))
 }

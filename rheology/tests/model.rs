@@ -5,8 +5,9 @@ use std::f64::consts::PI;
 
 use proptest::prelude::*;
 use traction_rheology::{
-    Accuracy, Inputs, Model, Outputs, Resolution, RheologyError, closed, elastic_plastic, evaluate,
-    rigid_plastic, viscoelastic,
+    Accuracy, Inputs, Limit, Model, Modulus, Outputs, Properties, Resolution, RheologyError,
+    closed, elastic_plastic, elastic_plastic_with, evaluate, grid_reference, rigid_plastic,
+    viscoelastic,
 };
 
 fn inp(k: f64, j1: f64, j2: f64, j3: f64) -> Inputs {
@@ -280,6 +281,64 @@ fn viscoelastic_limits() {
     )
     .unwrap();
     assert!(small.j4 > 0.0 && small.j4 < 2e-3, "{small:?}");
+}
+
+#[test]
+fn property_variations() {
+    // (1) The grid scheme for the default combination agrees with the strip
+    // integrator: Richardson at 400/800 cells leaves ≈ 1e-5..1e-4 (observed
+    // in tests/tests/rheology_grid.rs); tolerance 3e-4.
+    for i in [inp(1.0, 1.5, 0.3, 2.0), inp(4.0, 0.5, -0.2, 6.0)] {
+        let g = grid_reference(&i, Properties::default(), 400).unwrap();
+        let e = ep(&i, 1e-5);
+        let d = (g.j4 - e.j4)
+            .abs()
+            .max((g.j5 - e.j5).abs())
+            .max((g.j6 - e.j6).abs());
+        assert!(d < 3e-4, "{g:?} {e:?}");
+    }
+    // (2) Constant limit L = 1, G constant, slip only: per strip
+    // ∫Zx dX = 2A·c² if 2cA ≤ 1, else 1/(2A) + (2c − 1/A), A = J1/√k.
+    // Exact J4 by a 200 000-point midpoint rule in Y (error < 1e-9).
+    let (k, j1) = (1.0_f64, 0.6_f64);
+    let a = j1 / k.sqrt();
+    let n = 200_000;
+    let mut s = 0.0;
+    for i in 0..n {
+        let y = -1.0 + 2.0 * (i as f64 + 0.5) / n as f64;
+        let c = (1.0 - y * y).sqrt();
+        let strip = if 2.0 * c * a <= 1.0 {
+            2.0 * a * c * c
+        } else {
+            0.5 / a + (2.0 * c - 1.0 / a)
+        };
+        s += strip * 2.0 / n as f64;
+    }
+    let exact = s / PI;
+    let props = Properties {
+        modulus: Modulus::Constant,
+        limit: Limit::Constant,
+    };
+    let o =
+        elastic_plastic_with(&inp(k, j1, 0.0, 0.0), props, Accuracy::new(1e-4).unwrap()).unwrap();
+    // First-order grid + Richardson at 400/800 cells: 2e-4.
+    assert!((o.j4 - exact).abs() < 2e-4, "{} vs {exact}", o.j4);
+    // (3) All four combinations give finite, bounded (|F| ≤ μN plus the
+    // grid's 1e-3 slack) and dissipative results with spin.
+    for modulus in [Modulus::Constant, Modulus::PressureProportional] {
+        for limit in [Limit::PressureProportional, Limit::Constant] {
+            let o = elastic_plastic_with(
+                &inp(2.0, 1.0, 0.5, 3.0),
+                Properties { modulus, limit },
+                Accuracy::new(1e-3).unwrap(),
+            )
+            .unwrap();
+            assert!(
+                o.j4.is_finite() && o.j4.hypot(o.j5) <= 1.0 + 1e-3 && o.j7 >= 0.0,
+                "{modulus:?} {limit:?} {o:?}"
+            );
+        }
+    }
 }
 
 proptest! {
