@@ -10,9 +10,16 @@
 //! C11, C22 and C23 were transcribed and cross-checked entry by entry against two
 //! public machine-readable copies:
 //!
-//! 1. the `linrol` routine of CONTACT (E.A.H. Vollebregt & J.J. Kalker, module
-//!    `m_hertz`, Apache-2.0), which cites "Table E.3 of Kalker 1990";
-//! 2. an older copy of the same routine and a C++ port of it (`kalker_table`).
+//! 1. the `linrol` routine of CONTACT (E.A.H. Vollebregt & J.J. Kalker;
+//!    github.com/eve70a/CONTACT, `src/m_hertz.f90`, commit 6a9d48e, Apache-2.0),
+//!    which cites "Table E.3 of Kalker 1990";
+//! 2. an older copy of the same routine and a C++ port of it (found by exact-value
+//!    search of public code; their repositories could not be resolved with the
+//!    search tools).
+//!
+//! Both copies descend from CONTACT, so they are not independent transcriptions
+//! of Kalker's book; the internal checks below are what guards against an error
+//! common to both. (The data were re-typed here, not copied as code.)
 //!
 //! All 180 values agree except one: C23 at a/b = 0.8, ν = 0.25 reads 1.25 in
 //! copy 1 and 1.15 in copy 2. 1.25 is used: the ν = 0.25 column of C23 rises by

@@ -24,7 +24,8 @@
 //! * **Half-toroidal CVT variator** ([`HalfToroidalVariator`]): contact positions,
 //!   rolling speeds and spin at the input and output contacts versus tilt angle.
 //! * **Dimensionless groups** J1, J2, J3 (Appendix IV equations 11 and 12,
-//!   Appendix V section 6): `J = (3π/8)(m/μ)·ratio·√k` ([`j1`], [`j2`], [`j3`]).
+//!   Appendix V section 6): `J = (3π/8)(m/μ)·ratio·√k` ([`j1`], [`j2`], [`j3`],
+//!   [`j_groups`]). The speed-pole location is `ε = J1/J3 = ΔU/(ω√(ab))`.
 //!   (Equation (5) of the main text prints `J3 = 3/8 m/μ (ω√(ab)/U)√k` without the
 //!   π; equations (9), (11), (12) and the 9-digit J3 values of Appendix VI all
 //!   carry it, so the π is used here.)
@@ -275,6 +276,34 @@ pub fn j2(m: f64, mu: f64, k: f64, side_slip_ratio: f64) -> Result<f64> {
 /// Dimensionless spin `J3 = (3π/8)(m/μ)(ω√(ab)/U)√k` (Appendix IV eq. 12).
 pub fn j3(m: f64, mu: f64, k: f64, z: f64) -> Result<f64> {
     j_group(m, mu, k, "spin grouping ω√(ab)/U", z)
+}
+
+/// The three kinematic J groups of one operating point (dimensionless).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JGroups {
+    /// J1, dimensionless slip.
+    pub j1: f64,
+    /// J2, dimensionless side slip.
+    pub j2: f64,
+    /// J3, dimensionless spin.
+    pub j3: f64,
+}
+
+/// J1, J2, J3 from the traction slope `m`, peak traction `mu`, aspect ratio `k`,
+/// slide-to-roll ratio ΔU/U, side-slip ratio ΔV/U and spin grouping Z = ω√(ab)/U.
+pub fn j_groups(
+    m: f64,
+    mu: f64,
+    k: f64,
+    slip_ratio: f64,
+    side_slip_ratio: f64,
+    z: f64,
+) -> Result<JGroups> {
+    Ok(JGroups {
+        j1: j1(m, mu, k, slip_ratio)?,
+        j2: j2(m, mu, k, side_slip_ratio)?,
+        j3: j3(m, mu, k, z)?,
+    })
 }
 
 // ---------------------------------------------------------------- general 3-D

@@ -5,7 +5,7 @@
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use traction_kinematics::{
-    BodyMotion, HalfToroidalVariator, contact_kinematics, side_slip_ratio,
+    BodyMotion, HalfToroidalVariator, contact_kinematics, j_groups, side_slip_ratio,
     tilted_disc_spin_per_speed,
 };
 
@@ -163,6 +163,36 @@ fn half_toroidal_rejects_contacts_past_the_axis() {
     let e = v.state(0.5, 100.0).unwrap_err();
     assert!(e.to_string().contains("contact radius"));
     assert!(HalfToroidalVariator::new(-1.0, 0.1, 1.0).is_err());
+}
+
+#[test]
+fn speed_pole_is_j1_over_j3() {
+    // Tilted rig (LS, k = 1, 6°) with the lower disc 0.5 % faster: ΔU < 0.
+    let alpha = 6f64.to_radians();
+    let (upper, mut lower) = rig(alpha, 0.0, 12.5e-3, 12.5e-3, 25e-3, 800.0);
+    lower.angular_velocity *= 1.005;
+    let k =
+        contact_kinematics(&upper, &lower, Vector3::zeros(), Vector3::z(), Vector3::x()).unwrap();
+    let (a, b) = (0.32e-3, 0.32e-3);
+    let eps = k.speed_pole(a, b).unwrap();
+    // Hand value: ΔU/U = −0.005·v/(1.0025·v), ω/U from eq. (6), ε = (ΔU/U)/(ω√(ab)/U).
+    let du_u = -0.005 / 1.0025;
+    let w_u = tilted_disc_spin_per_speed(alpha, 12.5e-3, 12.5e-3).unwrap() / 1.0025;
+    // U is the mean speed: the upper spin per U scales with v⁺/U = 1/1.0025.
+    let expect = du_u / (w_u * (a * b).sqrt());
+    assert!((eps / expect - 1.0).abs() < 1e-9, "{eps} vs {expect}");
+    let z = k.spin_group(a, b).unwrap();
+    let j = j_groups(40.0, 0.08, 1.0, k.slip_ratio().unwrap(), 0.0, z).unwrap();
+    assert!((j.j1 / j.j3 - eps).abs() < 1e-12 * eps.abs());
+    // Zero spin: ε undefined, an error naming the spin.
+    let (u0, l0) = rig(0.0, 0.0, 12.5e-3, 12.5e-3, 25e-3, 800.0);
+    let k0 = contact_kinematics(&u0, &l0, Vector3::zeros(), Vector3::z(), Vector3::x()).unwrap();
+    assert!(
+        k0.speed_pole(a, b)
+            .unwrap_err()
+            .to_string()
+            .contains("spin")
+    );
 }
 
 fn vec3() -> impl Strategy<Value = Vector3<f64>> {
