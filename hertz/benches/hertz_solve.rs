@@ -22,6 +22,9 @@ fn bench(c: &mut Criterion) {
                 .and_then(|g| g.at_load(black_box(1400.0)))
         })
     });
+    c.bench_function("carlson R_D(0, k², 1), one evaluation", |b| {
+        b.iter(|| traction_hertz::elliptic::rd(0.0, black_box(25.5), 1.0))
+    });
     let g = Geometry::new(&upper, &lower);
     c.bench_function("hertz at_p0 on a cached geometry", |b| {
         b.iter(|| g.as_ref().map(|g| g.at_p0(black_box(1.45e9))))

@@ -356,17 +356,17 @@ pub fn aspect_ratio(curvature_ratio: f64) -> Result<f64, HertzError> {
     // Solve on the k ≥ 1 side; ratio(1/k) = 1/ratio(k) exactly.
     let flip = rho < 1.0;
     let big = if flip { 1.0 / rho } else { rho };
-    if big > ratio_of_k(K_MAX) {
+    let ln_rho = big.ln();
+    // Bracket: g(0) = −ln ρ < 0; g(ln K_MAX) < 0 means k > K_MAX.
+    let (mut lo, mut hi) = (0.0_f64, K_MAX.ln());
+    let (mut glo, mut ghi) = (-ln_rho, log_ratio_residual(hi, ln_rho));
+    if ghi < 0.0 {
         return Err(HertzError::AspectRatioOutOfRange {
             ratio: rho,
             k_min: K_MIN,
             k_max: K_MAX,
         });
     }
-    let ln_rho = big.ln();
-    // Bracket: g(0) = −ln ρ < 0 and g(ln K_MAX) ≥ 0 by the check above.
-    let (mut lo, mut hi) = (0.0_f64, K_MAX.ln());
-    let (mut glo, mut ghi) = (-ln_rho, log_ratio_residual(hi, ln_rho));
     // Start from the Hamrock–Brewe estimate k ≈ 1.0339 ρ^0.636 to shrink the
     // bracket (only used if it lands inside and has the right sign).
     let guess = (1.0339 * big.powf(0.6360)).ln();
@@ -407,7 +407,10 @@ pub fn aspect_ratio(curvature_ratio: f64) -> Result<f64, HertzError> {
             }
             side = 1;
         }
-        if g.abs() < 1e-16 {
+        // |g| is the log-ratio residual and dg/d(ln k) ≥ 1.5 over the range,
+        // so |g| ≤ 1e-15 means k is within ~1e-15 relative (evaluation noise
+        // of g is a few 1e-16).
+        if g.abs() <= 1e-15 {
             break;
         }
     }
@@ -426,10 +429,14 @@ pub fn aspect_ratio(curvature_ratio: f64) -> Result<f64, HertzError> {
 /// ```
 pub fn shape_factors(k: f64) -> Result<(f64, f64), HertzError> {
     check_k(k)?;
-    let k2 = k * k;
-    let a3 = 2.0 * (elliptic::rd(0.0, k2, 1.0) + elliptic::rd(0.0, 1.0, k2)) / (3.0 * PI);
-    let a = a3.cbrt();
+    let a = shape_a_of_k(k);
     Ok((a, k * a))
+}
+
+/// `A(k)`, unchecked (k from the root solve is in range by construction).
+fn shape_a_of_k(k: f64) -> f64 {
+    let k2 = k * k;
+    (2.0 * (elliptic::rd(0.0, k2, 1.0) + elliptic::rd(0.0, 1.0, k2)) / (3.0 * PI)).cbrt()
 }
 
 /// Elliptic parameter `m = 1 − (minor/major)²` for aspect ratio `k`.
@@ -459,7 +466,7 @@ impl Geometry {
             Method::Exact => {
                 let k = aspect_ratio(cx / cy)?;
                 let m = parameter_of_k(k);
-                let (shape_a, _) = shape_factors(k)?;
+                let shape_a = shape_a_of_k(k);
                 (
                     k,
                     m,
