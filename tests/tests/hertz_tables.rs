@@ -7,6 +7,11 @@
 //! k = 5 toroid. Table 2-1's printed Re = 11.5 mm needs Ry in [144.2, 152.0]
 //! mm (Re in [11.45, 11.55)); 150.4 mm gives Re = 11.54 mm.
 //!
+//! Table 2-4 lists Ry = 20.6 mm for the high-speed k = 1 toroid where Table
+//! 2-1 prints 22.6 mm; 22.6 mm is used: it reproduces Table 2-1's Re = 11.3 mm
+//! and k ≈ 1, while 20.6 mm would give Re = 10.77 mm and k = 0.94 (see
+//! `table_2_4_hs_k1_radius_is_inconsistent`).
+//!
 //! Material: steel (AISI-O1), E = 210 GPa, ν = 0.3, `E' = 2/((1−ν²)/E·2)`.
 // Helpers outside #[test] functions unwrap too: any failure is a test failure.
 #![allow(clippy::unwrap_used)]
@@ -289,4 +294,18 @@ fn table_2_3_pressure_from_load_and_load_from_pressure() {
         let back = g.at_load(from_p0.load).unwrap();
         assert!(rel_diff(back.p0, p0_gpa * 1e9) < 1e-13, "{test}");
     }
+}
+
+#[test]
+fn table_2_4_hs_k1_radius_is_inconsistent() {
+    // Why Table 2-1's 22.6 mm is used rather than Table 2-4's 20.6 mm: with
+    // 20.6 mm, Re is 10.77 mm, outside the half-unit of the printed 11.3 mm,
+    // and k is 0.94, not 1.
+    let g = Geometry::new(&Body::steel(33e-3, 20.6e-3), &Body::steel(71.4e-3, INF)).unwrap();
+    let re_mm = g.re * 1e3;
+    println!(
+        "HS k=1 with Ry = 20.6 mm: Re = {re_mm:.4} mm, k = {:.4}",
+        g.k
+    );
+    assert!((re_mm - 11.3).abs() > 0.05 && g.k < 0.96);
 }
