@@ -287,13 +287,13 @@ impl Accuracy {
         // Calibrated by the convergence study (rheology/tests/convergence.rs):
         // the error is dominated by the Y quadrature across strips where the
         // flow pattern changes (second order in the panel width) and by RK4
-        // in s (fourth order); panels ∝ tol^(-1/2), s-step ∝ panel width.
+        // in s (fourth order): panels ∝ tol^(-1/2), s-step ∝ tol^(1/4).
         let p = (10.0 * (1e-3 / self.tol).sqrt()).ceil();
         let panels = p.clamp(2.0, 400.0) as usize;
         Resolution {
             y_panels: panels,
             y_points: 8,
-            s_step: (0.5 / panels as f64).max(0.002),
+            s_step: (0.1 * (self.tol / 1e-3).powf(0.25)).clamp(0.002, 0.3),
         }
     }
 }
