@@ -424,3 +424,90 @@ impl Fluid {
         Ok(self.spin_mu.evaluate(&q, Policy::Strict)?.value)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(p0_pa: f64, speed_m_s: f64, theta_celsius: f64, k: f64, z: f64) -> Query {
+        Query {
+            p0_pa,
+            speed_m_s,
+            theta_celsius,
+            k,
+            z,
+        }
+    }
+
+    #[test]
+    fn printed_mu_near_a_measured_point() {
+        // Test 790531-1: 1.45 GPa, 20 m/s, 32 °C, k = 5, μ = 0.103; III-C prints
+        // the estimate 0.096 for it. Printed coefficients (3 digits) give it
+        // within 0.002 of 0.096 (coefficient rounding).
+        let f = Fluid::santotrac_50().unwrap();
+        let mu = f.mu(1.45e9, 20.0, 32.0, 5.0).unwrap();
+        assert!((mu - 0.096).abs() < 0.002, "{mu}");
+    }
+
+    #[test]
+    fn envelope_strict_and_flagged() {
+        let f = Fluid::tdf_88().unwrap();
+        // TDF-88 speeds: 10..80 m/s in III-B.
+        let e = f.evaluate(
+            Quantity::Mu,
+            &q(1.45e9, 100.0, 70.0, 1.0, 0.0),
+            Policy::Strict,
+        );
+        assert!(matches!(e, Err(FluidError::OutsideEnvelope { .. })));
+        if let Ok(v) = f.evaluate(
+            Quantity::Mu,
+            &q(1.45e9, 100.0, 70.0, 1.0, 0.0),
+            Policy::Extrapolate,
+        ) {
+            assert_eq!(v.extrapolated, vec!["rolling speed U (m/s)"]);
+        }
+        let nan = f.evaluate(
+            Quantity::Mu,
+            &q(f64::NAN, 20.0, 70.0, 1.0, 0.0),
+            Policy::Extrapolate,
+        );
+        assert!(matches!(nan, Err(FluidError::NotFinite { .. })));
+        // Spin μ needs Z in range; the zero-spin correlations have Z = 0 only.
+        let z = f.evaluate(
+            Quantity::Mu,
+            &q(1.45e9, 20.0, 70.0, 1.0, 0.001),
+            Policy::Strict,
+        );
+        assert!(matches!(z, Err(FluidError::OutsideEnvelope { .. })));
+        assert_eq!(f.spin_mu.source, Source::Refit);
+        assert_eq!(f.mu.source, Source::Printed);
+    }
+
+    #[test]
+    fn guard_and_linear_alternative() {
+        let f = Fluid::santotrac_50().unwrap();
+        let theta_bar = f.mu.correlation.means().theta_celsius;
+        let near = q(1.45e9, 50.0, theta_bar + 0.1, 1.0, 0.0);
+        assert!(matches!(
+            f.evaluate(Quantity::Mu, &near, Policy::Strict),
+            Err(FluidError::Regression(
+                traction_regression::RegressionError::NearMeanTemperature { .. }
+            ))
+        ));
+        let lin = Fluid::refit(FluidName::Santotrac50, TemperatureForm::Linear).unwrap();
+        let v = lin.evaluate(Quantity::Mu, &near, Policy::Strict).unwrap();
+        assert!(v.value > 0.05 && v.value < 0.12);
+    }
+
+    #[test]
+    fn envelopes_are_the_data_ranges() {
+        let f = Fluid::santotrac_50().unwrap();
+        // III-E data: P0 1.00..1.90 GPa, U 10..80 m/s, θ 27..73.5 °C, k 1..5.
+        let e = f.spin_mu.envelope;
+        assert_eq!(e.p0_pa, (1.0e9, 1.9e9));
+        assert_eq!(e.speed_m_s, (10.0, 80.0));
+        assert_eq!(e.theta_celsius, (27.0, 73.5));
+        assert_eq!(e.k, (1.0, 5.0));
+        assert_eq!(f.slope.envelope.z, (0.0, 0.0));
+    }
+}
