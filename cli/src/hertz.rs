@@ -9,7 +9,8 @@
 //!
 //! Output: the input columns, followed by `a,b,k,p0,load,re,e_prime,shape_a,
 //! shape_b,c` (m, m, -, Pa, N, m, Pa, -, -, m/Pa); with `--all-columns` also
-//! `p_mean,area,approach,m,elliptic_k,elliptic_e` (Pa, m², m, -, -, -).
+//! `p_mean,area,approach,eccentricity_sq,elliptic_k,elliptic_e` (Pa, m², m,
+//! -, -, -; `eccentricity_sq` is the elliptic parameter m = e² of K and E).
 //! Every row is validated before anything is written; a bad row stops the
 //! command with an error naming the row, the line and the column or quantity.
 
@@ -32,7 +33,7 @@ const EXTRA_COLUMNS: [&str; 6] = [
     "p_mean",
     "area",
     "approach",
-    "m",
+    "eccentricity_sq",
     "elliptic_k",
     "elliptic_e",
 ];
@@ -60,7 +61,7 @@ pub struct HertzArgs {
     /// Solution method.
     #[arg(long, value_enum, default_value_t = MethodArg::Exact)]
     pub method: MethodArg,
-    /// Also write p_mean,area,approach,m,elliptic_k,elliptic_e.
+    /// Also write p_mean,area,approach,eccentricity_sq,elliptic_k,elliptic_e.
     #[arg(long)]
     pub all_columns: bool,
 }
@@ -105,7 +106,7 @@ fn output_cells(c: &Contact, all_columns: bool) -> Vec<String> {
             c.p_mean,
             c.area,
             c.approach,
-            g.m,
+            g.eccentricity_sq,
             g.elliptic_k,
             g.elliptic_e,
         ]);

@@ -150,7 +150,7 @@ fn all_columns_and_hamrock_brewe() {
         "p_mean",
         "area",
         "approach",
-        "m",
+        "eccentricity_sq",
         "elliptic_k",
         "elliptic_e",
     ];

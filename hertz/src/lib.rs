@@ -186,9 +186,10 @@ pub struct Geometry {
     pub e_prime: f64,
     /// Aspect ratio `k = b/a` (dimensionless, report's name).
     pub k: f64,
-    /// Parameter of the elliptic integrals, `m = 1 − (minor/major)²`
-    /// (squared eccentricity of the ellipse).
-    pub m: f64,
+    /// Parameter of the elliptic integrals, `m = e² = 1 − (minor/major)²`,
+    /// the squared eccentricity of the ellipse (not the report's traction
+    /// slope m).
+    pub eccentricity_sq: f64,
     /// Complete elliptic integral of the first kind `K(m)` used.
     pub elliptic_k: f64,
     /// Complete elliptic integral of the second kind `E(m)` used.
@@ -504,7 +505,7 @@ impl Geometry {
             re,
             e_prime,
             k,
-            m,
+            eccentricity_sq: m,
             elliptic_k: ek,
             elliptic_e: ee,
             shape_a,
