@@ -1,5 +1,7 @@
 //! Fit time of the 193 × 32 problem (App. III-E) and the 73 × 16 problem
 //! (III-A), evaluation time of one correlation.
+// Benchmark harness, not a user-reachable path: a failure here is a defect to see.
+#![allow(clippy::unwrap_used)]
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
