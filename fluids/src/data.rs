@@ -406,3 +406,152 @@ pub fn listing(appendix: &str) -> Result<Vec<ListingRow>, FluidError> {
         })
         .collect()
 }
+
+const APP_I: &str = include_str!("../data/appendix_i_traces.csv");
+const APP_VII_E: &str = include_str!("../data/appendix_vii_e_combined.csv");
+const MAIN_TABLES: &str = include_str!("../data/main_text_tables.csv");
+
+/// One point of an Appendix I reduced traction trace (SI units except P0).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TracePoint {
+    /// Trace number.
+    pub trace: String,
+    /// Fluid label as printed.
+    pub fluid: String,
+    /// Aspect ratio k.
+    pub k: f64,
+    /// Traction slope m used to reduce the trace.
+    pub m: f64,
+    /// Peak traction coefficient μ used to reduce the trace.
+    pub mu: f64,
+    /// Normal load Fz (N).
+    pub fz_n: f64,
+    /// Hertz pressure P0 (GPa).
+    pub p0_gpa: f64,
+    /// Inlet temperature (°C).
+    pub temp_celsius: f64,
+    /// Surface speed U (m/s).
+    pub speed_m_s: f64,
+    /// Slip parameter JS = (3π/8)(m/μ)(Δv/U).
+    pub js: f64,
+    /// Reduced traction J5 = (Fy/Fz)/μ.
+    pub j5: f64,
+    /// Side slip/roll ratio Δv/U.
+    pub dv_over_u: f64,
+    /// Traction coefficient Fy/Fz.
+    pub fy_over_fz: f64,
+    /// Slip velocity Δv (m/s).
+    pub dv_m_s: f64,
+    /// Side force Fy (N).
+    pub fy_n: f64,
+}
+
+/// The 72 points (8 traces × 9) of Appendix I.
+pub fn appendix_i_traces() -> Result<Vec<TracePoint>, FluidError> {
+    let file = "appendix_i_traces.csv";
+    rows(APP_I)
+        .map(|(line, f)| {
+            need(file, line, &f, 15)?;
+            let n = |i: usize| num(file, line, &f[i]);
+            Ok(TracePoint {
+                trace: f[0].clone(),
+                fluid: f[1].clone(),
+                k: n(2)?,
+                m: n(3)?,
+                mu: n(4)?,
+                fz_n: n(5)?,
+                p0_gpa: n(6)?,
+                temp_celsius: n(7)?,
+                speed_m_s: n(8)?,
+                js: n(9)?,
+                j5: n(10)?,
+                dv_over_u: n(11)?,
+                fy_over_fz: n(12)?,
+                dv_m_s: n(13)?,
+                fy_n: n(14)?,
+            })
+        })
+        .collect()
+}
+
+/// One traction coefficient of Appendix VII-E (U = 20 m/s, θ = 70 °C).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CombinedSlipPoint {
+    /// Fluid label.
+    pub fluid: String,
+    /// Test number.
+    pub test: String,
+    /// Hertz pressure P0 (GPa).
+    pub p0_gpa: f64,
+    /// Aspect ratio k.
+    pub k: f64,
+    /// Tilt angle (degrees).
+    pub spin_deg: f64,
+    /// Initial slope m of the zero-spin, zero-side-slip test (if printed).
+    pub m: Option<f64>,
+    /// Imposed side slip (percent).
+    pub side_slip_pct: f64,
+    /// Traction coefficient.
+    pub mu: f64,
+}
+
+/// The 132 values (33 tests × 4 side slips) of Appendix VII-E.
+pub fn appendix_vii_e() -> Result<Vec<CombinedSlipPoint>, FluidError> {
+    let file = "appendix_vii_e_combined.csv";
+    rows(APP_VII_E)
+        .map(|(line, f)| {
+            need(file, line, &f, 8)?;
+            let n = |i: usize| num(file, line, &f[i]);
+            Ok(CombinedSlipPoint {
+                fluid: f[0].clone(),
+                test: f[1].clone(),
+                p0_gpa: n(2)?,
+                k: n(3)?,
+                spin_deg: n(4)?,
+                m: if f[5].trim().is_empty() {
+                    None
+                } else {
+                    Some(n(5)?)
+                },
+                side_slip_pct: n(6)?,
+                mu: n(7)?,
+            })
+        })
+        .collect()
+}
+
+/// One row of the main-text tables 2-6, 4-1, 4-2, 4-3 (empty cells `None`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MainTableRow {
+    /// "2-6", "4-1", "4-2" or "4-3".
+    pub table: String,
+    /// Fluid label (may be empty).
+    pub fluid: String,
+    /// Trace number (may be empty).
+    pub trace: String,
+    /// temp_celsius, p0_gpa, speed_m_s, k, spin_deg, z, m, mu, mu_spin.
+    pub values: [Option<f64>; 9],
+}
+
+/// Tables 2-6, 4-1, 4-2, 4-3 of the main text.
+pub fn main_text_tables() -> Result<Vec<MainTableRow>, FluidError> {
+    let file = "main_text_tables.csv";
+    rows(MAIN_TABLES)
+        .map(|(line, f)| {
+            need(file, line, &f, 12)?;
+            let mut values = [None; 9];
+            for (i, v) in values.iter_mut().enumerate() {
+                let s = f[3 + i].trim();
+                if !s.is_empty() {
+                    *v = Some(num(file, line, s)?);
+                }
+            }
+            Ok(MainTableRow {
+                table: f[0].clone(),
+                fluid: f[1].clone(),
+                trace: f[2].clone(),
+                values,
+            })
+        })
+        .collect()
+}

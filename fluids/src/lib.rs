@@ -18,6 +18,9 @@
 //! * `printed_results.csv`: coefficients, means and error statistics of
 //!   III-A..III-E — [`printed_result`]; `appendix_iii_listings.csv`: the printed
 //!   per-point columns — [`listing`].
+//! * `appendix_i_traces.csv` (8 reduced traces, [`appendix_i_traces`]),
+//!   `appendix_vii_e_combined.csv` (33 combined-slip tests, [`appendix_vii_e`]),
+//!   `main_text_tables.csv` (Tables 2-6, 4-1, 4-2, 4-3, [`main_text_tables`]).
 //!
 //! ## Assumptions
 //! * Z for each test is C''·P0 with the C'' the report's III-E regression used
@@ -61,8 +64,9 @@ mod error;
 mod fluid;
 
 pub use data::{
-    Correction, FluidName, ListingRow, PrintedResult, SpinFactor, TestRecord, corrections, listing,
-    printed_result, spin_factor, spin_factors, tests,
+    CombinedSlipPoint, Correction, FluidName, ListingRow, MainTableRow, PrintedResult, SpinFactor,
+    TestRecord, TracePoint, appendix_i_traces, appendix_vii_e, corrections, listing,
+    main_text_tables, printed_result, spin_factor, spin_factors, tests,
 };
 pub use error::FluidError;
 pub use fluid::{
