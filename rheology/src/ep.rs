@@ -477,6 +477,86 @@ pub(crate) fn contact_integral(
     (j4, j5, j6)
 }
 
+/// Sums (∫Zx, ∫Zy, ∫Zy·X, ∫Zx·Y over strips) of one φ-panel by an n-point rule.
+fn panel_sums(
+    sc: &Scaled,
+    lo: f64,
+    hi: f64,
+    n: usize,
+    strip_fn: &mut impl FnMut(&Strip) -> StripSums,
+) -> [f64; 4] {
+    let rule = quad::rule(n);
+    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+    let mut acc = [0.0; 4];
+    for &(t, w) in rule {
+        let (y, cphi) = (mid + half * t).sin_cos();
+        let wt = half * w * cphi;
+        let st = strip_fn(&sc.strip(y));
+        acc[0] += wt * st.ix;
+        acc[1] += wt * st.iy;
+        acc[2] += wt * st.ixy;
+        acc[3] += wt * y * st.ix;
+    }
+    acc
+}
+
+fn to_j(sc: &Scaled, s: &[f64; 4]) -> (f64, f64, f64) {
+    (
+        s[0] / PI,
+        s[1] / PI,
+        (s[2] + sc.dx * s[1] - sc.k * s[3]) / (PI * sc.k.sqrt()),
+    )
+}
+
+/// Adaptive composite Gauss–Legendre in φ: a panel is accepted when its
+/// n-point value and the sum over its two halves differ by less than
+/// tol·width/π in J4, J5 and J6 (the halves' value is kept); otherwise both
+/// halves are refined, down to `max_depth` levels.
+pub(crate) fn contact_integral_adaptive(
+    sc: &Scaled,
+    n: usize,
+    tol: f64,
+    max_depth: u32,
+    mut strip_fn: impl FnMut(&Strip) -> StripSums,
+) -> (f64, f64, f64) {
+    let mut total = [0.0; 4];
+    // (lo, hi, value, depth)
+    let mut stack: Vec<(f64, f64, [f64; 4], u32)> = Vec::with_capacity(32);
+    for (lo, hi) in [(-FRAC_PI_2, 0.0), (0.0, FRAC_PI_2)] {
+        let v = panel_sums(sc, lo, hi, n, &mut strip_fn);
+        stack.push((lo, hi, v, 0));
+    }
+    while let Some((lo, hi, coarse, depth)) = stack.pop() {
+        let m = 0.5 * (lo + hi);
+        let l = panel_sums(sc, lo, m, n, &mut strip_fn);
+        let r = panel_sums(sc, m, hi, n, &mut strip_fn);
+        let fine = [l[0] + r[0], l[1] + r[1], l[2] + r[2], l[3] + r[3]];
+        let d = [
+            fine[0] - coarse[0],
+            fine[1] - coarse[1],
+            fine[2] - coarse[2],
+            fine[3] - coarse[3],
+        ];
+        let (e4, e5, e6) = to_j(sc, &d);
+        let err = e4.abs().max(e5.abs()).max(e6.abs());
+        let allowed = tol * (hi - lo) / PI;
+        if err <= allowed || depth >= max_depth || err.is_nan() {
+            for i in 0..4 {
+                total[i] += fine[i];
+            }
+        } else {
+            stack.push((lo, m, l, depth + 1));
+            stack.push((m, hi, r, depth + 1));
+        }
+    }
+    to_j(sc, &total)
+}
+
+/// Elastic/plastic (J4, J5, J6), adaptive in Y, fixed s-step.
+pub(crate) fn solve_adaptive(sc: &Scaled, n: usize, tol: f64, s_step: f64) -> (f64, f64, f64) {
+    contact_integral_adaptive(sc, n, tol, 10, |s| s.integrate(s_step))
+}
+
 /// Elastic/plastic (J4, J5, J6) by strip integration.
 pub(crate) fn solve(sc: &Scaled, res: &Resolution) -> (f64, f64, f64) {
     contact_integral(sc, res, |s| s.integrate(res.s_step))

@@ -3,7 +3,7 @@
 //! accuracy parameter's promise (error ≤ tol against a converged solution).
 #![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
 
-use traction_rheology::{Accuracy, Inputs, Outputs, Resolution, elastic_plastic};
+use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, elastic_plastic, evaluate};
 
 fn err(a: &Outputs, b: &Outputs) -> f64 {
     (a.j4 - b.j4)
@@ -100,7 +100,10 @@ fn accuracy_parameter_is_met() {
         let i = Inputs::new(k, j1, j2, j3).unwrap();
         let r = run(&i, 128, 0.004);
         for tol in [1e-2, 1e-3, 1e-4] {
-            let o = elastic_plastic(&i, &Accuracy::new(tol).unwrap().resolution()).unwrap();
+            let a = Accuracy::new(tol).unwrap();
+            let o = evaluate(&i, Model::ElasticPlastic, a).unwrap();
+            let f = elastic_plastic(&i, &a.resolution()).unwrap();
+            assert!(err(&f, &r) <= tol, "fixed resolution, tol {tol}");
             let e = err(&o, &r);
             println!("k={k} J=({j1},{j2},{j3}) tol={tol:.0e}: error {e:.2e}");
             assert!(e <= tol, "tol {tol}: error {e}");
