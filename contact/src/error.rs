@@ -1,6 +1,7 @@
 //! The crate's error type.
 
 use traction_compliance::ComplianceError;
+use traction_fluids::FluidError;
 use traction_hertz::HertzError;
 use traction_kinematics::KinematicsError;
 use traction_rheology::RheologyError;
@@ -30,6 +31,11 @@ pub enum ContactError {
     /// The disc-compliance correction failed (Kalker table range, singular conversion).
     #[error("disc compliance: {0}")]
     Compliance(#[from] ComplianceError),
+    /// A report fluid's correlation failed: outside its data envelope under
+    /// [`crate::EnvelopeRule::Strict`] (names the quantity, value and data
+    /// range), near the report's θ' singularity, or non-physical.
+    #[error("fluid correlation: {0}")]
+    Fluid(#[from] FluidError),
     /// The body motion could not be turned into contact kinematics.
     #[error("kinematics: {0}")]
     Kinematics(#[from] KinematicsError),

@@ -130,6 +130,7 @@
 mod error;
 
 use std::f64::consts::PI;
+use std::sync::Arc;
 
 pub use error::ContactError;
 use error::check;
@@ -158,7 +159,7 @@ pub const REGIME_TOLERANCE: f64 = 0.05;
 
 /// The fluid: how the traction slope m and peak traction coefficient μ of the
 /// contact are obtained.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum Fluid {
     /// User values of the initial traction slope m and the zero-spin peak
@@ -183,9 +184,82 @@ pub enum Fluid {
         /// Film thickness h, m.
         film_thickness: f64,
     },
+    /// One of the report's fluids through its correlations (traction-fluids):
+    /// m(P0, |U|, θ, k) and μ(P0, |U|, θ, k) at the state, with the data
+    /// envelope applied by `envelope`; if `spin_peak`, the forces are scaled
+    /// by the spin-peak correlation μ_s(P0, |U|, θ, k, |Z|) (for every Z,
+    /// including 0, so that the forces stay continuous in ω).
+    Report {
+        /// The fluid's correlations (printed coefficients or a refit).
+        fluid: Arc<traction_fluids::Fluid>,
+        /// What to do outside the data envelope.
+        envelope: EnvelopeRule,
+        /// Scale the forces by the spin-peak μ_s correlation.
+        spin_peak: bool,
+    },
+}
+
+/// What a report fluid does outside the envelope (box) of its data: P0, |U|,
+/// θ, k and, for the spin-peak correlation, |Z| = |ω|√(ab)/|U|.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum EnvelopeRule {
+    /// Error naming the quantity, its value and the data range (the fluids
+    /// crate's [`traction_fluids::Policy::Strict`]).
+    #[default]
+    Strict,
+    /// Evaluate the correlation outside the data, flagged in
+    /// [`Evaluation::outside_envelope`].
+    Extrapolate,
+    /// Evaluate at the nearest point of the envelope (each variable clamped to
+    /// its data range), flagged in [`Evaluation::outside_envelope`]: bounded
+    /// properties for simulators that pass through start-up (U → 0).
+    Clamp,
+}
+
+/// Which correlation variables were outside the data envelope (report fluids
+/// only; all false otherwise).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct OutsideEnvelope {
+    /// Hertz pressure P0.
+    pub p0: bool,
+    /// Rolling speed |U|.
+    pub speed: bool,
+    /// Inlet temperature θ.
+    pub temperature: bool,
+    /// Aspect ratio k.
+    pub k: bool,
+    /// Spin parameter |Z| (spin-peak correlation).
+    pub z: bool,
+}
+
+impl OutsideEnvelope {
+    /// True if any variable was outside.
+    pub fn any(&self) -> bool {
+        self.p0 || self.speed || self.temperature || self.k || self.z
+    }
 }
 
 impl Fluid {
+    /// Santotrac 50 with the report's printed coefficients (App. III-A, III-C,
+    /// III-E), the given envelope rule, forces scaled by μ (no spin peak).
+    pub fn santotrac_50(envelope: EnvelopeRule) -> Result<Fluid, ContactError> {
+        Ok(Fluid::Report {
+            fluid: Arc::new(traction_fluids::Fluid::santotrac_50()?),
+            envelope,
+            spin_peak: false,
+        })
+    }
+
+    /// TDF-88 with the report's printed coefficients (App. III-B, III-D; the
+    /// spin μ is the fluids crate's refit of III-F).
+    pub fn tdf_88(envelope: EnvelopeRule) -> Result<Fluid, ContactError> {
+        Ok(Fluid::Report {
+            fluid: Arc::new(traction_fluids::Fluid::tdf_88()?),
+            envelope,
+            spin_peak: false,
+        })
+    }
+
     /// User m and μ; checks 0 < m ≤ [`MAX_SLOPE`], 0 < μ ≤ [`MAX_TRACTION_COEFFICIENT`].
     pub fn constant(slope: f64, peak: f64) -> Result<Fluid, ContactError> {
         let f = Fluid::Constant {
@@ -226,11 +300,25 @@ impl Fluid {
                 f.validate()?;
                 Ok(f)
             }
-            Fluid::Physical { .. } => Err(ContactError::OutOfRange {
+            _ => Err(ContactError::OutOfRange {
                 quantity: "spin-peak traction coefficient μ_s",
                 value: spin_peak,
-                valid: "given only with user m and μ (Fluid::Constant)",
+                valid: "given only with user m and μ (Fluid::Constant; report fluids: use_spin_peak)",
             }),
+        }
+    }
+
+    /// For a report fluid: scale the forces by its spin-peak μ_s correlation.
+    pub fn use_spin_peak(self, on: bool) -> Fluid {
+        match self {
+            Fluid::Report {
+                fluid, envelope, ..
+            } => Fluid::Report {
+                fluid,
+                envelope,
+                spin_peak: on,
+            },
+            other => other,
         }
     }
 
@@ -286,6 +374,7 @@ impl Fluid {
                     "finite and > 0 m",
                 )?;
             }
+            Fluid::Report { .. } => {}
         }
         Ok(())
     }
@@ -503,6 +592,8 @@ pub struct Evaluation {
     pub j7: f64,
     /// Regime of App. IV figure 14.
     pub regime: Regime,
+    /// Correlation variables outside the fluid's data envelope (report fluids).
+    pub outside_envelope: OutsideEnvelope,
 }
 
 impl Evaluation {
@@ -513,7 +604,7 @@ impl Evaluation {
 }
 
 /// The traction contact, built once from the bodies, the fluid and the options.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct TractionContact {
     geometry: Geometry,
     fluid: Fluid,
@@ -587,14 +678,22 @@ impl TractionContact {
         &self.options
     }
 
-    /// Slopes (m_x, m_y), μ and μ_f at a loaded contact.
-    fn properties(&self, a: f64, b: f64, p0: f64, load: f64) -> Result<[f64; 4], ContactError> {
-        let (m, mu, mu_f, film) = match self.fluid {
+    /// Slopes (m_x, m_y), μ and μ_f at a loaded contact, and the envelope flags.
+    fn properties(
+        &self,
+        a: f64,
+        b: f64,
+        p0: f64,
+        load: f64,
+        state: &OperatingState,
+    ) -> Result<([f64; 4], OutsideEnvelope), ContactError> {
+        let mut flags = OutsideEnvelope::default();
+        let (m, mu, mu_f, film) = match &self.fluid {
             Fluid::Constant {
                 slope,
                 peak,
                 spin_peak,
-            } => (slope, peak, spin_peak.unwrap_or(peak), None),
+            } => (*slope, *peak, spin_peak.unwrap_or(*peak), None),
             Fluid::Physical {
                 shear_modulus,
                 limiting_stress,
@@ -602,7 +701,36 @@ impl TractionContact {
             } => {
                 let mu = limiting_stress * PI * a * b / load;
                 let m = 8.0 / 3.0 * shear_modulus * a * a * b / (load * film_thickness);
-                (m, mu, mu, Some(film_thickness))
+                (m, mu, mu, Some(*film_thickness))
+            }
+            Fluid::Report {
+                fluid,
+                envelope,
+                spin_peak,
+            } => {
+                let speed = state.rolling_speed.abs();
+                let z =
+                    state.spin.abs() * (a * b).sqrt() / speed.max(self.options.rolling_speed_floor);
+                let base = traction_fluids::Query {
+                    p0_pa: p0,
+                    speed_m_s: speed,
+                    theta_celsius: state.inlet_temperature_celsius,
+                    k: self.geometry.k,
+                    z: 0.0,
+                };
+                let m = correlate(&fluid.slope, base, *envelope, &mut flags)?;
+                let mu = correlate(&fluid.mu, base, *envelope, &mut flags)?;
+                let mu_f = if *spin_peak {
+                    correlate(
+                        &fluid.spin_mu,
+                        traction_fluids::Query { z, ..base },
+                        *envelope,
+                        &mut flags,
+                    )?
+                } else {
+                    mu
+                };
+                (m, mu, mu_f, None)
             }
         };
         let (mx, my) = match (self.discs, self.options.compliance) {
@@ -642,7 +770,7 @@ impl TractionContact {
             }
             _ => (m, m),
         };
-        Ok([mx, my, mu, mu_f])
+        Ok(([mx, my, mu, mu_f], flags))
     }
 
     /// Solve the rheology in one rolling frame.
@@ -671,7 +799,7 @@ impl TractionContact {
         }
         let hz = self.geometry.at_load(state.load)?;
         let (a, b, p0, n) = (hz.a, hz.b, hz.p0, state.load);
-        let [mx, my, mu, mu_f] = self.properties(a, b, p0, n)?;
+        let ([mx, my, mu, mu_f], outside_envelope) = self.properties(a, b, p0, n, state)?;
         let sqrt_ab = (a * b).sqrt();
         let sk = k.sqrt();
         let cx = 3.0 * PI / 8.0 * (mx / mu) * sk;
@@ -744,6 +872,7 @@ impl TractionContact {
             j6,
             j7,
             regime,
+            outside_envelope,
         })
     }
 
@@ -755,8 +884,9 @@ impl TractionContact {
                 peak,
                 spin_peak,
             } => (slope, peak, spin_peak.unwrap_or(peak)),
-            // μ = τ̄πab/N and m are undefined at N = 0; reported as 0.
-            Fluid::Physical { .. } => (0.0, 0.0, 0.0),
+            // μ = τ̄πab/N and m are undefined at N = 0 (and the report
+            // correlations need P0 > 0); reported as 0.
+            Fluid::Physical { .. } | Fluid::Report { .. } => (0.0, 0.0, 0.0),
         };
         Evaluation {
             fx: 0.0,
@@ -785,6 +915,7 @@ impl TractionContact {
             } else {
                 Regime::NotClassified
             },
+            outside_envelope: OutsideEnvelope::default(),
         }
     }
 
@@ -812,6 +943,48 @@ impl TractionContact {
             Regime::ElasticWithSpin
         })
     }
+}
+
+/// Evaluate one correlation under the envelope rule, recording the flags.
+fn correlate(
+    c: &traction_fluids::FluidCorrelation,
+    q: traction_fluids::Query,
+    rule: EnvelopeRule,
+    flags: &mut OutsideEnvelope,
+) -> Result<f64, ContactError> {
+    let e = &c.envelope;
+    let out = |x: f64, (lo, hi): (f64, f64)| {
+        let tol = 1e-9 * hi.abs().max(lo.abs());
+        x < lo - tol || x > hi + tol
+    };
+    let o = [
+        out(q.p0_pa, e.p0_pa),
+        out(q.speed_m_s, e.speed_m_s),
+        out(q.theta_celsius, e.theta_celsius),
+        out(q.k, e.k),
+        out(q.z, e.z),
+    ];
+    let value = match rule {
+        EnvelopeRule::Strict => c.evaluate(&q, traction_fluids::Policy::Strict)?.value,
+        EnvelopeRule::Extrapolate => c.evaluate(&q, traction_fluids::Policy::Extrapolate)?.value,
+        EnvelopeRule::Clamp => {
+            let cl = |x: f64, (lo, hi): (f64, f64)| x.clamp(lo.min(hi), hi.max(lo));
+            let qc = traction_fluids::Query {
+                p0_pa: cl(q.p0_pa, e.p0_pa),
+                speed_m_s: cl(q.speed_m_s, e.speed_m_s),
+                theta_celsius: cl(q.theta_celsius, e.theta_celsius),
+                k: cl(q.k, e.k),
+                z: cl(q.z, e.z),
+            };
+            c.evaluate(&qc, traction_fluids::Policy::Strict)?.value
+        }
+    };
+    flags.p0 |= o[0];
+    flags.speed |= o[1];
+    flags.temperature |= o[2];
+    flags.k |= o[3];
+    flags.z |= o[4];
+    Ok(value)
 }
 
 /// Inverse of the zero-spin traction function ψ(S) of App. V eq. 22 for

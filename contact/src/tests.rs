@@ -521,3 +521,56 @@ proptest! {
         prop_assert!((a.fy - b.fy).abs() <= tol, "{} {}", a.fy, b.fy);
     }
 }
+
+#[test]
+fn report_fluid_through_the_correlations_and_envelope() {
+    // Santotrac 50 inside its data (Table 2-3 class point: 1.45 GPa, 20 m/s,
+    // 70 °C, k = 1): m and μ are the fluids crate's correlations at the Hertz P0
+    // and k of the state (same function, composition check: 1e-12).
+    let c = contact(
+        ls_k1(),
+        Fluid::santotrac_50(EnvelopeRule::Strict).unwrap(),
+        Options::default(),
+    );
+    let hz = c.geometry().at_p0(1.45e9).unwrap();
+    let r = c.evaluate(&state(hz.load, 20.0, 0.02, 0.0, 0.0)).unwrap();
+    let f = traction_fluids::Fluid::santotrac_50().unwrap();
+    let m = f.slope_m(r.p0, 20.0, 70.0, r.k).unwrap();
+    let mu = f.mu(r.p0, 20.0, 70.0, r.k).unwrap();
+    assert!((r.m_used / m - 1.0).abs() < 1e-12 && (r.mu_used / mu - 1.0).abs() < 1e-12);
+    assert!(!r.outside_envelope.any());
+    // Reversed rolling uses |U|: the same properties.
+    let q = c.evaluate(&state(hz.load, -20.0, -0.02, 0.0, 0.0)).unwrap();
+    assert_eq!((q.m_used, q.mu_used), (r.m_used, r.mu_used));
+    // Start-up: U = 0 is outside the speed range of the data.
+    let s0 = state(hz.load, 0.0, 0.02, 0.0, 0.0);
+    let e = c.evaluate(&s0).unwrap_err().to_string();
+    assert!(
+        e.contains("rolling speed U") && e.contains("envelope"),
+        "{e}"
+    );
+    // Clamp: properties at the envelope's lowest speed, flagged; forces finite.
+    let cc = contact(
+        ls_k1(),
+        Fluid::santotrac_50(EnvelopeRule::Clamp).unwrap(),
+        Options::default(),
+    );
+    let r0 = cc.evaluate(&s0).unwrap();
+    let lo = f.slope.envelope.speed_m_s.0;
+    let m_lo = f.slope_m(r0.p0, lo, 70.0, r0.k).unwrap();
+    assert!((r0.m_used / m_lo - 1.0).abs() < 1e-12);
+    assert!(r0.outside_envelope.speed && !r0.outside_envelope.p0 && r0.fx.is_finite());
+    // Spin-peak correlation scales the forces when asked (TDF-88, refit III-F).
+    let ct = contact(
+        hs_k5(),
+        Fluid::tdf_88(EnvelopeRule::Extrapolate)
+            .unwrap()
+            .use_spin_peak(true),
+        Options::default(),
+    );
+    let hz = ct.geometry().at_p0(1.0e9).unwrap();
+    let w = 0.0071 * 20.0 / (hz.a * hz.b).sqrt();
+    let r = ct.evaluate(&state(hz.load, 20.0, 0.0, 0.05, w)).unwrap();
+    assert!((r.traction_y - r.mu_force * r.j5).abs() < 1e-12);
+    assert!(r.mu_force != r.mu_used);
+}
