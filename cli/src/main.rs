@@ -16,6 +16,8 @@ mod fmu;
 mod hertz;
 mod jt;
 mod kinematics;
+mod map;
+mod reproduce;
 mod table;
 
 use error::CliError;
@@ -44,6 +46,10 @@ enum Command {
     Compliance(compliance::ComplianceArgs),
     /// Build and package the FMI 2.0 co-simulation FMU (`fmu build --out PATH.fmu`).
     Fmu(fmu::FmuArgs),
+    /// Reproduce the report's tables and figures (CSV, PNG, SVG, summary.md).
+    Reproduce(reproduce::ReproduceArgs),
+    /// J4..J7 of the J+T model over a grid of J1, J2, J3 (CSV + heat-map PNG).
+    Map(map::MapArgs),
 }
 
 fn run(cli: Cli) -> Result<(), CliError> {
@@ -55,6 +61,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Kinematics(a) => kinematics::run(a),
         Command::Compliance(a) => compliance::run(a),
         Command::Fmu(a) => fmu::run(a),
+        Command::Reproduce(a) => reproduce::run(a),
+        Command::Map(a) => map::run(a),
     }
 }
 
