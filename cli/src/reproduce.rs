@@ -159,6 +159,14 @@ pub fn run(args: ReproduceArgs) -> Result<(), CliError> {
         figures.len(),
         args.out.display()
     );
+    // The tolerance check as a test runner's closing line (tables without a
+    // printed theory have no tolerance and are not counted).
+    let checked = summaries.iter().filter(|s| s.tolerance != "-").count();
+    let n_failed = summaries.iter().filter(|s| !s.within_tolerance).count();
+    println!(
+        "reproduce: {} passed, {n_failed} failed",
+        checked - n_failed
+    );
     let failed: Vec<_> = summaries
         .iter()
         .filter(|s| !s.within_tolerance)

@@ -293,6 +293,7 @@ pub fn fmt_dev(v: f64, kind: Deviation) -> String {
         return "n/a".to_string();
     }
     match kind {
+        Deviation::Relative if v > 0.0 && v < 1e-5 => format!("{:.1e} %", 100.0 * v),
         Deviation::Relative => format!("{:.3} %", 100.0 * v),
         Deviation::Absolute => format!("{v:.4}"),
     }
