@@ -83,7 +83,10 @@ fn bounds(fig: &Figure) -> Result<Bounds, ReproduceError> {
         };
         (a - d, b + d)
     };
-    Ok((pad(x0, x1), pad(y0.min(0.0), y1)))
+    // Show the origin when the data come near it (traction curves start at 0),
+    // not for data far from zero (e.g. slopes 20..60 in the Appendix III plots).
+    let y0 = if y0 > 0.0 && y0 < 0.3 * y1 { 0.0 } else { y0 };
+    Ok((pad(x0, x1), pad(y0, y1)))
 }
 
 fn draw<DB: DrawingBackend>(
