@@ -175,9 +175,7 @@ impl Table {
 
 /// Parse a number; accepts `inf`, `+inf`, `-inf`, `infinity` (any case).
 pub fn parse_number(s: &str) -> Result<f64, String> {
-    let v: f64 = s
-        .parse()
-        .map_err(|_| format!("`{s}` is not a number"))?;
+    let v: f64 = s.parse().map_err(|_| format!("`{s}` is not a number"))?;
     if v.is_nan() {
         return Err(format!("`{s}` is not a number (NaN is not accepted)"));
     }
@@ -254,7 +252,10 @@ mod tests {
         assert_eq!(t.len(), 2);
         assert_eq!(t.f64(0, "b").unwrap(), f64::INFINITY);
         let e = t.f64(1, "b").unwrap_err().to_string();
-        assert!(e.contains("row 2") && e.contains("`b`") && e.contains("line 4"), "{e}");
+        assert!(
+            e.contains("row 2") && e.contains("`b`") && e.contains("line 4"),
+            "{e}"
+        );
         assert!(t.f64(0, "c").is_err());
         assert_eq!(t.opt_f64(0, "c").unwrap(), None);
     }
