@@ -210,3 +210,44 @@ def test_ecos_simulate(fmu_path, tmp_path):
     p0 = float(rows[-1][col[0]])
     assert 0.5e9 < p0 < 2e9, p0
     assert len(rows) > 50
+
+
+def test_bad_input_is_an_error_with_a_logged_message_and_the_instance_recovers(fmu_path):
+    from fmpy import extract, read_model_description
+    from fmpy.fmi1 import FMICallException
+    from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+
+    md = read_model_description(fmu_path)
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    log = []
+
+    def logger(env, name, status, category, message):
+        log.append((status, category.decode(), message.decode()))
+
+    callbacks = fmi2CallbackFunctions()
+    callbacks.logger = fmi2CallbackLoggerTYPE(logger)
+    fmu = FMU2Slave(
+        guid=md.guid, unzipDirectory=extract(fmu_path), modelIdentifier="TractionContact", instanceName="bad"
+    )
+    fmu.instantiate(callbacks=callbacks)
+    fmu.setupExperiment(startTime=0.0)
+    fmu.enterInitializationMode()
+    fmu.exitInitializationMode()
+    fmu.doStep(0.0, 1e-3)
+    state = fmu.getFMUState()
+    with pytest.raises(FMICallException):
+        fmu.setReal([vr["normal_load"]], [float("nan")])
+    assert log and log[-1][0] == 3 and log[-1][1] == "logStatusError", log
+    assert "normal_load" in log[-1][2]
+    # Restoring a saved state continues the simulation (fmi2Error is recoverable
+    # through fmi2SetFMUstate, as the standard allows).
+    fmu.setFMUState(state)
+    fmu.doStep(1e-3, 1e-3)
+    assert all(math.isfinite(x) for x in fmu.getReal([vr["fx"], vr["p0"]]))
+    fmu.freeFMUState(state)
+    # Spin: the provisional model warns once that the spin moment is 0.
+    fmu.setReal([vr["spin"]], [10.0])
+    fmu.doStep(2e-3, 1e-3)
+    assert any(s == 1 and "spin moment" in m for s, _, m in log), log
+    fmu.terminate()
+    fmu.freeInstance()
