@@ -9,6 +9,8 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod compliance;
+mod contact;
+mod curve;
 mod error;
 mod fit;
 mod fluid;
@@ -44,6 +46,10 @@ enum Command {
     Kinematics(kinematics::KinematicsArgs),
     /// Disc compliance: Kalker coefficients and traction-slope conversion.
     Compliance(compliance::ComplianceArgs),
+    /// The dimensional traction contact (Hertz + fluid + J+T) in batch from CSV.
+    Contact(contact::ContactArgs),
+    /// A traction-vs-slip curve of one dimensional contact (CSV).
+    Curve(curve::CurveArgs),
     /// Build and package the FMI 2.0 co-simulation FMU (`fmu build --out PATH.fmu`).
     Fmu(fmu::FmuArgs),
     /// Reproduce the report's tables and figures (CSV, PNG, SVG, summary.md).
@@ -60,6 +66,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Fluid(a) => fluid::run(a),
         Command::Kinematics(a) => kinematics::run(a),
         Command::Compliance(a) => compliance::run(a),
+        Command::Contact(a) => contact::run(a),
+        Command::Curve(a) => curve::run(a),
         Command::Fmu(a) => fmu::run(a),
         Command::Reproduce(a) => reproduce::run(a),
         Command::Map(a) => map::run(a),

@@ -1,0 +1,204 @@
+//! Integration tests of `traction contact` and `traction curve`: the binary on
+//! CSV through stdin/stdout, compared with the library, and its errors.
+// Helpers outside #[test] functions unwrap too: any failure is a test failure.
+#![allow(clippy::unwrap_used)]
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+use traction_contact::{Body, EnvelopeRule, Fluid, OperatingState, Options, TractionContact};
+
+const OUT: [&str; 18] = [
+    "fx", "fy", "mz", "loss", "a", "b", "k", "p0", "m_used", "mu_used", "J1", "J2", "J3", "J4",
+    "J5", "J6", "J7", "regime",
+];
+
+fn traction(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_traction"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    if let Err(e) = child.stdin.take().unwrap().write_all(stdin.as_bytes()) {
+        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "{e}");
+    }
+    child.wait_with_output().unwrap()
+}
+
+fn ok(args: &[&str], stdin: &str) -> Vec<Vec<String>> {
+    let out = traction(args, stdin);
+    assert!(
+        out.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect()
+}
+
+fn fails(args: &[&str], stdin: &str) -> String {
+    let out = traction(args, stdin);
+    assert!(!out.status.success());
+    assert!(out.stdout.is_empty(), "partial output written");
+    String::from_utf8(out.stderr).unwrap()
+}
+
+const HEADER: &str = "rx1,ry1,rx2,ry2,e1,nu1,e2,nu2,load,u,du,dv,omega,theta";
+/// High-speed machine, k = 5 discs (Table 2-1), trace 79072704 class state.
+const HS_K5: &str = "0.033,0.27,0.0714,inf,210e9,0.3,210e9,0.3";
+
+fn hs_k5() -> (Body, Body) {
+    (
+        Body::steel(33e-3, 270e-3),
+        Body::steel(71.4e-3, f64::INFINITY),
+    )
+}
+
+#[test]
+fn contact_rows_match_the_library() {
+    let input = format!(
+        "{HEADER},m,mu,fluid,label\n\
+         {HS_K5},5000,80,0.4,0.65,35,73,35,0.075,,user\n\
+         {HS_K5},2000,-20,0.01,-0.02,-3,50,,,santotrac-50,report\n"
+    );
+    // The Santotrac row is outside the data's k range (Hertz k 5.04 > 5): clamp.
+    let rows = ok(&["contact", "--envelope", "clamp"], &input);
+    let header: Vec<&str> = HEADER.split(',').collect();
+    let mut expect: Vec<String> = header.iter().map(|s| s.to_string()).collect();
+    expect.extend(["m", "mu", "fluid", "label"].map(String::from));
+    expect.extend(OUT.map(String::from));
+    assert_eq!(rows[0], expect);
+    assert_eq!(rows.len(), 3);
+    let (b1, b2) = hs_k5();
+    let fluids = [
+        Fluid::constant(35.0, 0.075).unwrap(),
+        Fluid::santotrac_50(EnvelopeRule::Clamp).unwrap(),
+    ];
+    let states = [
+        OperatingState::new(5000.0, 80.0, 0.4, 0.65, 35.0, 73.0).unwrap(),
+        OperatingState::new(2000.0, -20.0, 0.01, -0.02, -3.0, 50.0).unwrap(),
+    ];
+    for (i, (fluid, state)) in fluids.into_iter().zip(states).enumerate() {
+        let c = TractionContact::new(&b1, &b2, fluid, Options::default()).unwrap();
+        let e = c.evaluate(&state).unwrap();
+        let row = &rows[i + 1];
+        assert_eq!(
+            row[header.len() + 3],
+            if i == 0 { "user" } else { "report" }
+        );
+        let col = |name: &str| {
+            let j = rows[0].iter().position(|h| h == name).unwrap();
+            row[j].clone()
+        };
+        // Shortest round-trip formatting: the same f64 bit for bit.
+        for (name, v) in [
+            ("fx", e.fx),
+            ("fy", e.fy),
+            ("mz", e.mz),
+            ("loss", e.loss),
+            ("p0", e.p0),
+            ("m_used", e.m_used),
+            ("mu_used", e.mu_used),
+            ("J3", e.j3),
+            ("J7", e.j7),
+        ] {
+            assert_eq!(col(name).parse::<f64>().unwrap(), v, "row {i} {name}");
+        }
+        assert_eq!(col("regime"), e.regime.name());
+    }
+}
+
+#[test]
+fn bad_rows_name_the_row_and_quantity() {
+    let input = format!(
+        "{HEADER},m,mu\n{HS_K5},5000,80,0.4,0,0,73,35,0.075\n{HS_K5},-1,80,0.4,0,0,73,35,0.075\n"
+    );
+    let e = fails(&["contact"], &input);
+    assert!(e.contains("row 2") && e.contains("load N"), "{e}");
+    // No fluid in a row.
+    let input = format!("{HEADER},m,mu\n{HS_K5},5000,80,0.4,0,0,73,35,\n");
+    let e = fails(&["contact"], &input);
+    assert!(e.contains("row 1") && e.contains("`mu`"), "{e}");
+    // Unknown fluid name.
+    let input = format!("{HEADER},fluid\n{HS_K5},5000,80,0.4,0,0,73,oil\n");
+    let e = fails(&["contact"], &input);
+    assert!(e.contains("unknown fluid `oil`"), "{e}");
+    // Outside the report fluid's envelope under the default strict rule.
+    let input = format!("{HEADER},fluid\n{HS_K5},5000,2,0.01,0,0,73,santotrac-50\n");
+    let e = fails(&["contact"], &input);
+    assert!(e.contains("row 1") && e.contains("envelope"), "{e}");
+    // No fluid columns at all.
+    let e = fails(
+        &["contact"],
+        &format!("{HEADER}\n{HS_K5},5000,80,0.4,0,0,73\n"),
+    );
+    assert!(e.contains("fluid"), "{e}");
+}
+
+#[test]
+fn curve_sweeps_the_slip_and_matches_the_library() {
+    let rows = ok(
+        &[
+            "curve",
+            "--rx1",
+            "0.025",
+            "--ry1",
+            "0.0125",
+            "--rx2",
+            "0.025",
+            "--p0",
+            "1.96e9",
+            "--u",
+            "20",
+            "--m",
+            "57.6",
+            "--mu",
+            "0.0956",
+            "--direction",
+            "side",
+            "--from",
+            "0",
+            "--to",
+            "0.02",
+            "--points",
+            "5",
+        ],
+        "",
+    );
+    assert_eq!(rows.len(), 6);
+    assert_eq!(rows[0][0], "slip_ratio");
+    let c = TractionContact::new(
+        &Body::steel(0.025, 0.0125),
+        &Body::steel(0.025, f64::INFINITY),
+        Fluid::constant(57.6, 0.0956).unwrap(),
+        Options::default(),
+    )
+    .unwrap();
+    let n = c.geometry().at_p0(1.96e9).unwrap().load;
+    let ty = rows[0].iter().position(|h| h == "traction_y").unwrap();
+    let mut prev = -1.0;
+    for (i, r) in rows[1..].iter().enumerate() {
+        let ratio = 0.005 * i as f64;
+        let e = c
+            .evaluate(&OperatingState::new(n, 20.0, 0.0, ratio * 20.0, 0.0, 70.0).unwrap())
+            .unwrap();
+        let v: f64 = r[ty].parse().unwrap();
+        assert_eq!(v, e.traction_y);
+        // Zero spin, side slip only: monotone, bounded by μ.
+        assert!(v > prev && v < 0.0956);
+        prev = v;
+    }
+    let e = fails(
+        &[
+            "curve", "--rx1", "0.025", "--ry1", "0.0125", "--rx2", "0.025", "--u", "20", "--m",
+            "57.6", "--mu", "0.0956",
+        ],
+        "",
+    );
+    assert!(e.contains("--load") && e.contains("--p0"), "{e}");
+}
