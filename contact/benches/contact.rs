@@ -10,7 +10,9 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use traction_contact::{Accuracy, Body, Fluid, Model, OperatingState, Options, TractionContact};
+use traction_contact::{
+    Accuracy, Body, EnvelopeRule, Fluid, Model, OperatingState, Options, TractionContact,
+};
 
 fn bodies() -> (Body, Body) {
     (
@@ -63,7 +65,36 @@ fn bench(c: &mut Criterion) {
     c.bench_function("evaluate, spin, tol 1e-3, no regime", |b| {
         b.iter(|| coarse.evaluate(black_box(&s)))
     });
+    // With the report fluid: Hertz + three correlations (m, μ, μ_s) + rheology.
+    let (b1, b2) = bodies();
+    let report = TractionContact::new(
+        &b1,
+        &b2,
+        Fluid::santotrac_50(EnvelopeRule::Clamp)
+            .expect("fluid")
+            .use_spin_peak(true),
+        Options::default(),
+    )
+    .expect("contact");
+    c.bench_function("evaluate, spin, Santotrac 50 correlations, tol 1e-4", |b| {
+        b.iter(|| report.evaluate(black_box(&s)))
+    });
+    let report0 = TractionContact::new(
+        &b1,
+        &b2,
+        Fluid::santotrac_50(EnvelopeRule::Clamp)
+            .expect("fluid")
+            .use_spin_peak(true),
+        Options {
+            classify_regime: false,
+            ..Options::default()
+        },
+    )
+    .expect("contact");
     let s0 = state(0.0);
+    c.bench_function("evaluate, no spin, Santotrac 50 correlations", |b| {
+        b.iter(|| report0.evaluate(black_box(&s0)))
+    });
     c.bench_function("evaluate, no spin (closed form)", |b| {
         b.iter(|| full.evaluate(black_box(&s0)))
     });
@@ -81,7 +112,6 @@ fn bench(c: &mut Criterion) {
     c.bench_function("part: rheology rigid/plastic (regime), tol 1e-4", |b| {
         b.iter(|| traction_rheology::rigid_plastic(black_box(&inp), Accuracy::default()))
     });
-    let (b1, b2) = bodies();
     c.bench_function("build: TractionContact::new (Hertz geometry)", |b| {
         b.iter(|| {
             TractionContact::new(
