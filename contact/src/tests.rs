@@ -574,3 +574,30 @@ fn report_fluid_through_the_correlations_and_envelope() {
     assert!((r.traction_y - r.mu_force * r.j5).abs() < 1e-12);
     assert!(r.mu_force != r.mu_used);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// Sign reversals at fixed U (either sign): (ΔU, ΔV, ω) → −(ΔU, ΔV, ω)
+    /// reverses (Fx, Fy, Mz); the mirror y → −y, (ΔV, ω) → −(ΔV, ω), gives
+    /// (Fx, −Fy, −Mz). Bound: twice the rheology's accuracy target (1e-4 in
+    /// J4..J6) times μN (and μN√(ab) for Mz), in case the adaptive quadrature
+    /// is not exactly symmetric.
+    #[test]
+    fn sign_symmetries(
+        u in prop_oneof![-80.0f64..-1e-3, 1e-3f64..80.0],
+        du in -0.05f64..0.05, dv in -0.05f64..0.05, w in -50.0f64..50.0,
+    ) {
+        let c = contact(hs_k5(), Fluid::constant(35.0, 0.075).unwrap(), Options::default());
+        let n = 2000.0;
+        let p = c.evaluate(&state(n, u, du, dv, w)).unwrap();
+        let q = c.evaluate(&state(n, u, -du, -dv, -w)).unwrap();
+        let r = c.evaluate(&state(n, u, du, -dv, -w)).unwrap();
+        let tol = 2e-4 * 0.075 * n;
+        let tolm = tol * (p.a * p.b).sqrt();
+        prop_assert!((p.fx + q.fx).abs() <= tol && (p.fy + q.fy).abs() <= tol);
+        prop_assert!((p.mz + q.mz).abs() <= tolm);
+        prop_assert!((p.fx - r.fx).abs() <= tol && (p.fy + r.fy).abs() <= tol);
+        prop_assert!((p.mz + r.mz).abs() <= tolm);
+    }
+}
