@@ -152,6 +152,11 @@ const SHAPE_FACTORS: [(f64, f64, f64); 4] = [
     (5.0, 0.511, 2.55),
 ];
 
+/// Unit of the last printed digit of A and B in Table 2-2 (same order). At
+/// k = 1 the printed "1.0" is exact in theory (A = B = 1), so no rounding.
+const SHAPE_FACTOR_UNITS: [(f64, f64); 4] =
+    [(0.01, 0.001), (0.0, 0.0), (0.001, 0.01), (0.001, 0.01)];
+
 #[test]
 fn table_2_2_shape_factors() {
     for (k, a_printed, b_printed) in SHAPE_FACTORS {
@@ -184,30 +189,17 @@ fn table_2_2_c_identifies_the_composite_modulus() {
         2.0 / (2.0 * (1.0 - STEEL_POISSON_RATIO * STEEL_POISSON_RATIO) / STEEL_YOUNGS_MODULUS);
     let half = |x: f64, unit: f64| 0.5 * unit / x;
     for m in &MACHINES {
-        let (_, a, b) = SHAPE_FACTORS
+        let i = SHAPE_FACTORS
             .iter()
-            .copied()
-            .find(|s| s.0 == m.k_printed)
+            .position(|s| s.0 == m.k_printed)
             .unwrap();
-        let (ua, ub) = match m.k_printed {
-            x if x == 1.0 => (0.1, 0.1), // printed 1.0
-            x if x == 5.0 => (0.001, 0.01),
-            _ => (
-                if a > 1.0 { 0.01 } else { 0.001 },
-                if b > 1.0 { 0.01 } else { 0.001 },
-            ),
-        };
+        let (_, a, b) = SHAPE_FACTORS[i];
+        let (ua, ub) = SHAPE_FACTOR_UNITS[i];
         let c = 2.0 * std::f64::consts::PI * a * a * b * m.re_printed_mm * 1e-3 / e_prime * 1e12;
         let tol = 2.0 * half(a, ua)
             + half(b, ub)
             + m.re_half_unit_mm / m.re_printed_mm
             + half(m.c_printed, 0.001);
-        let tol = if m.k_printed == 1.0 {
-            // A = B = 1 exactly in theory (printed "1.0"): only Re and C round.
-            m.re_half_unit_mm / m.re_printed_mm + half(m.c_printed, 0.001)
-        } else {
-            tol
-        };
         println!(
             "{}: C(printed A, B, Re) = {c:.4}e-12 vs {} (tol {:.2} %)",
             m.name,
