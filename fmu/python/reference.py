@@ -1,4 +1,4 @@
-"""Independent reference calculation of the provisional FMU physics.
+"""Independent reference calculation of the FMU physics without spin.
 
 Written from the report, not from the Rust code: circular Hertz contact in
 closed form (a^3 = 3 N R / (4 E*), P0 = 3 N / (2 pi a^2)) and the J+T
@@ -8,7 +8,9 @@ elastic/plastic traction in the form printed in Appendix V, eq. 22-23:
     psi = (1/pi)[pi/2 - asin((1-S^2)/(1+S^2)) + 2S/(1+S^2)]
     J4 = (2/3) J1 psi/(S sqrt(k)),     Fx = mu N J4
 
-with U replaced by max(|U|, U_reg) (the FMU's documented regularisation).
+with U replaced by max(|U|, U_reg) (the FMU's documented regularisation;
+traction-contact blends the forward and reversed rolling solutions within
+|U| < U_reg, which without spin gives the same forces).
 """
 
 import math

@@ -8,8 +8,9 @@
 //! contact size and pressure and the report's dimensionless groups J1..J7.
 //!
 //! Layers (one way):
-//! * [`physics`] — the only seam to the contact physics (provisional model
-//!   until `traction-contact` lands, see its docs for the equations).
+//! * [`physics`] — the only seam to the contact physics: it translates the
+//!   FMU's parameters and inputs for `traction-contact` (Hertz, fluid
+//!   correlations, compliance, J+T rheology with slip, side slip and spin).
 //! * [`variables`] — the variable table: names, value references, units,
 //!   causality, variability, start values, dependencies.
 //! * [`model_description`] — modelDescription.xml generated from the table.

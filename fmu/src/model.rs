@@ -6,7 +6,7 @@
 //! threads one at a time. The C wrappers in [`crate::ffi`] only translate
 //! pointers to slices and strings and call these methods.
 
-use crate::physics::{self, Contact, Fluid, PhysicsError, Rheology};
+use crate::physics::{self, Contact, Envelope, Fluid, PhysicsError, Rheology};
 use crate::variables::{
     self, Causality, Kind, N_INPUTS, N_REAL_OUTPUTS, N_REAL_PARAMS, Variable, vr,
 };
@@ -201,23 +201,33 @@ pub struct Snapshot {
     time: f64,
     params: [f64; N_REAL_PARAMS],
     inputs: [f64; N_INPUTS],
-    enums: [i32; 4],
+    enums: [i32; N_ENUMS],
     compliance: bool,
     outputs: [f64; N_OUT],
     regime: i32,
     dirty: bool,
-    spin_warned: bool,
+    envelope_warned: bool,
 }
 
-const MAGIC: &[u8; 8] = b"TRACFMU1";
+const N_ENUMS: usize = 5;
+const MAGIC: &[u8; 8] = b"TRACFMU2";
 const SNAPSHOT_LEN: usize =
-    8 + 1 + 8 * 2 + 8 * N_REAL_PARAMS + 8 * N_INPUTS + 4 * 4 + 1 + 8 * N_OUT + 4 + 2 + 16;
+    8 + 1 + 8 * 2 + 8 * N_REAL_PARAMS + 8 * N_INPUTS + 4 * N_ENUMS + 1 + 8 * N_OUT + 4 + 2 + 16;
+
+/// Index of an Enumeration parameter in [`Snapshot::enums`].
+fn enum_index(r: u32) -> Option<usize> {
+    match r {
+        vr::FLUID..=vr::SIDE_SLIP_SOURCE => Some((r - vr::FLUID) as usize),
+        vr::ENVELOPE => Some(4),
+        _ => None,
+    }
+}
 
 impl Snapshot {
     fn start_values() -> Self {
         let mut params = [0.0; N_REAL_PARAMS];
         let mut inputs = [0.0; N_INPUTS];
-        let mut enums = [0; 4];
+        let mut enums = [0; N_ENUMS];
         let mut compliance = false;
         for v in variables::VARIABLES {
             match (v.causality, v.kind) {
@@ -228,7 +238,9 @@ impl Snapshot {
                     inputs[(v.vr - vr::LOAD) as usize] = s
                 }
                 (Causality::Parameter, Kind::Enumeration { start: Some(s), .. }) => {
-                    enums[(v.vr - vr::FLUID) as usize] = s;
+                    if let Some(i) = enum_index(v.vr) {
+                        enums[i] = s;
+                    }
                 }
                 (Causality::Parameter, Kind::Boolean { start: Some(s) }) => compliance = s,
                 _ => {}
@@ -245,7 +257,7 @@ impl Snapshot {
             outputs: [0.0; N_OUT],
             regime: 0,
             dirty: true,
-            spin_warned: false,
+            envelope_warned: false,
         }
     }
 
@@ -267,7 +279,7 @@ impl Snapshot {
         }
         b.extend_from_slice(&self.regime.to_le_bytes());
         b.push(u8::from(self.dirty));
-        b.push(u8::from(self.spin_warned));
+        b.push(u8::from(self.envelope_warned));
         // Checksum (FNV-1a 128) of everything before it.
         b.extend_from_slice(&crate::model_description::fnv1a_128(&b).to_le_bytes());
         b
@@ -321,7 +333,7 @@ impl Snapshot {
         for p in &mut inputs {
             *p = f(take(8));
         }
-        let mut enums = [0; 4];
+        let mut enums = [0; N_ENUMS];
         for e in &mut enums {
             *e = i(take(4));
         }
@@ -332,7 +344,7 @@ impl Snapshot {
         }
         let regime = i(take(4));
         let dirty = take(1)[0] != 0;
-        let spin_warned = take(1)[0] != 0;
+        let envelope_warned = take(1)[0] != 0;
         Ok(Self {
             mode,
             start_time,
@@ -344,7 +356,7 @@ impl Snapshot {
             outputs,
             regime,
             dirty,
-            spin_warned,
+            envelope_warned,
         })
     }
 }
@@ -417,6 +429,11 @@ impl TractionFmu {
             2 => Fluid::Tdf88,
             _ => Fluid::User,
         };
+        let envelope = match self.s.enums[4] {
+            1 => Envelope::Strict,
+            2 => Envelope::Extrapolate,
+            _ => Envelope::Clamp,
+        };
         let rheology = match self.s.enums[1] {
             2 => Rheology::RigidPlastic,
             3 => Rheology::Viscoelastic,
@@ -455,6 +472,7 @@ impl TractionFmu {
             e2: p[6],
             nu2: p[7],
             fluid,
+            envelope,
             m_user: p[vr::M_USER as usize - 1],
             mu_user: p[vr::MU_USER as usize - 1],
             rheology,
@@ -463,15 +481,16 @@ impl TractionFmu {
         })
     }
 
-    fn contact(&mut self) -> Result<Contact, FmuError> {
-        if let Some(c) = self.contact {
-            return Ok(c);
+    fn contact(&mut self) -> Result<&Contact, FmuError> {
+        if self.contact.is_none() {
+            let p = self.physics_parameters()?;
+            let c = Contact::new(&p)
+                .map_err(|e: PhysicsError| FmuError::error(format!("invalid parameters: {e}")))?;
+            self.contact = Some(c);
         }
-        let p = self.physics_parameters()?;
-        let c = Contact::new(&p)
-            .map_err(|e: PhysicsError| FmuError::error(format!("invalid parameters: {e}")))?;
-        self.contact = Some(c);
-        Ok(c)
+        self.contact
+            .as_ref()
+            .ok_or_else(|| FmuError::error("internal: contact not built"))
     }
 
     /// Spin per rolling speed of the tilt geometry (report eq. 6).
@@ -501,7 +520,6 @@ impl TractionFmu {
         if !self.s.dirty {
             return Ok(Status::Ok);
         }
-        let contact = self.contact()?;
         let x = &self.s.inputs;
         let p = &self.s.params;
         let (r1, r2) = (
@@ -536,7 +554,8 @@ impl TractionFmu {
             omega,
             inlet_temperature_celsius: input(vr::INLET_TEMPERATURE),
         };
-        let o = contact
+        let o = self
+            .contact()?
             .evaluate(&op)
             .map_err(|e| FmuError::error(format!("contact evaluation failed: {e}")))?;
         let coef = |f: f64| if op.load > 0.0 { f / op.load } else { 0.0 };
@@ -572,12 +591,15 @@ impl TractionFmu {
         self.s.outputs[18..].copy_from_slice(&o.j);
         self.s.regime = o.regime.map_or(0, |r| r as i32);
         self.s.dirty = false;
-        if omega != 0.0 && !self.s.spin_warned {
-            self.s.spin_warned = true;
+        if o.outside_envelope && !self.s.envelope_warned {
+            self.s.envelope_warned = true;
             log.log(
                 Status::Warning,
                 "logStatusWarning",
-                "spin is not 0 but the provisional contact model of this FMU returns spin moment mz = 0 and J6 = 0 (the spin model arrives with traction-contact, issue 5); forces ignore spin",
+                &format!(
+                    "the fluid correlations are used outside their data (P0 {:.4e} Pa, U {u} m/s, inlet {} degC, k {:.3}); fluid_envelope decides what happens (logged once per instance)",
+                    o.p0, op.inlet_temperature_celsius, o.k
+                ),
             );
             return Ok(Status::Warning);
         }
@@ -759,8 +781,8 @@ impl CoSimulation for TractionFmu {
         }
         for (&r, v) in vrs.iter().zip(values.iter_mut()) {
             *v = match r {
-                vr::FLUID..=vr::SIDE_SLIP_SOURCE => self.s.enums[(r - vr::FLUID) as usize],
                 vr::REGIME => self.s.regime,
+                _ if enum_index(r).is_some() => self.s.enums[enum_index(r).unwrap_or(0)],
                 _ => {
                     let e = FmuError::error(format!(
                         "fmi2GetInteger: value reference {r} is not an Integer or Enumeration variable of this FMU"
@@ -807,7 +829,9 @@ impl CoSimulation for TractionFmu {
                     valid.join(", ")
                 ))));
             }
-            self.s.enums[(r - vr::FLUID) as usize] = x;
+            if let Some(i) = enum_index(r) {
+                self.s.enums[i] = x;
+            }
             self.contact = None;
             self.s.dirty = true;
         }
@@ -1022,19 +1046,51 @@ mod tests {
             .unwrap();
         f.enter_initialization_mode().unwrap();
         let mut log = Capture(Vec::new());
-        assert_eq!(
-            f.exit_initialization_mode(&mut log).unwrap(),
-            Status::Warning
-        );
-        assert!(log.0[0].1.contains("spin moment"));
-        let mut o = [0.0; 3];
-        f.get_real(&[vr::U, vr::DV, vr::OMEGA], &mut o, &mut log)
-            .unwrap();
+        assert_eq!(f.exit_initialization_mode(&mut log).unwrap(), Status::Ok);
+        assert!(log.0.is_empty(), "{:?}", log.0);
+        let mut o = [0.0; 5];
+        f.get_real(
+            &[vr::U, vr::DV, vr::OMEGA, vr::MZ, vr::POWER_LOSS],
+            &mut o,
+            &mut log,
+        )
+        .unwrap();
         assert!((o[1] - o[0] * 0.01_f64.tan()).abs() < 1e-12);
         let w = o[0] * 0.1_f64.sin() / (0.0226 * 0.1_f64.cos() + 0.0104);
         assert!((o[2] - w).abs() < 1e-9);
-        assert_eq!(log.0.len(), 1, "the spin warning is logged once");
+        assert!(o[3] != 0.0, "spin gives a spin moment");
+        assert!(o[4] >= 0.0);
         assert!(f.set_integer(&[vr::FLUID], &[9]).is_err());
+    }
+
+    #[test]
+    fn report_fluid_through_start_up_warns_once_and_stays_finite() {
+        let mut f = TractionFmu::instantiate("t", &crate::model_description::guid()).unwrap();
+        f.set_integer(&[vr::FLUID], &[1]).unwrap(); // Santotrac 50, clamp (default)
+        f.set_real(&[vr::OMEGA1, vr::OMEGA2], &[0.0, 0.0]).unwrap();
+        f.enter_initialization_mode().unwrap();
+        let mut log = Capture(Vec::new());
+        f.exit_initialization_mode(&mut log).unwrap();
+        let all: Vec<u32> = (vr::FX..=vr::MU_USED).chain(vr::J1..=vr::J7).collect();
+        let mut o = vec![0.0; all.len()];
+        for k in 0..200 {
+            // Run up from rest with 1 % slip.
+            let w1 = f64::from(k) * 3.0;
+            f.set_real(&[vr::OMEGA1, vr::OMEGA2], &[w1, 0.99 * w1 * 0.033 / 0.0714])
+                .unwrap();
+            f.do_step(f64::from(k) * 1e-3, 1e-3, &mut log).unwrap();
+            f.get_real(&all, &mut o, &mut log).unwrap();
+            assert!(o.iter().all(|x| x.is_finite()));
+        }
+        assert_eq!(log.0.len(), 1, "{:?}", log.0);
+        assert_eq!(log.0[0].0, Status::Warning);
+        assert!(o[0] > 0.0 && o[16] > 0.0 && o[17] > 0.0, "fx, m, mu: {o:?}");
+        // Strict envelope: the same start-up is an error naming the quantity.
+        let mut g = TractionFmu::instantiate("t", &crate::model_description::guid()).unwrap();
+        g.set_integer(&[vr::FLUID, vr::ENVELOPE], &[1, 1]).unwrap();
+        g.enter_initialization_mode().unwrap();
+        let e = g.exit_initialization_mode(&mut log).unwrap_err();
+        assert!(e.message.contains("fluid correlation"), "{e}");
     }
 
     #[test]

@@ -63,8 +63,8 @@ fn write_xml(guid: &str) -> Result<String, quick_xml::Error> {
     let n_vars = VARIABLES.len().to_string();
     let desc = concat!(
         "Lubricated rolling traction contact between two rotating bodies (J+T elastic/plastic model, ",
-        "NASA report): forces, torques, spin moment and losses from load and angular speeds. ",
-        "Provisional physics until traction-contact lands: user m and mu, no spin moment."
+        "NASA report): forces, torques, spin moment and losses from load and angular speeds; ",
+        "fluids Santotrac 50 and TDF-88 through the report's correlations or user m and mu."
     );
     root.extend_attributes([
         ("fmiVersion", "2.0"),

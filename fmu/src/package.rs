@@ -47,7 +47,7 @@ pub fn documentation_html() -> String {
          <p>Lubricated rolling traction contact between two rotating bodies, after the NASA traction report \
          (Hertz contact, Johnson &amp; Tevaarwerk elastic/plastic traction). Connect the angular speeds of the \
          two bodies to <code>omega1</code>, <code>omega2</code> and feed <code>torque1</code>, <code>torque2</code> \
-         back to their inertias. Provisional physics: user m and &mu;, spin moment 0, until traction-contact lands.</p>\n\
+         back to their inertias. Fluids: Santotrac 50 and TDF-88 through the report's correlations, or user m and &mu;.</p>\n\
          <table border=\"1\"><tr><th>name</th><th>causality</th><th>unit</th><th>start</th><th>description</th></tr>\n",
     );
     for v in VARIABLES {

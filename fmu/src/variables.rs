@@ -192,7 +192,11 @@ pub const ENUM_TYPES: &[EnumType] = &[
         &[
             ("elastic_plastic", 1, "Johnson & Tevaarwerk elastic/plastic"),
             ("rigid_plastic", 2, "rigid/plastic"),
-            ("viscoelastic", 3, "viscoelastic (Maxwell)"),
+            (
+                "viscoelastic",
+                3,
+                "viscoelastic (not available through the FMU yet)",
+            ),
         ],
     ),
     (
@@ -216,6 +220,23 @@ pub const ENUM_TYPES: &[EnumType] = &[
                 "skew_angle",
                 2,
                 "the input skew_angle: dV = U tan(beta), report eq. 3",
+            ),
+        ],
+    ),
+    (
+        "EnvelopeRule",
+        "What the report fluids' correlations do outside their data",
+        &[
+            ("strict", 1, "error naming the quantity and the data range"),
+            (
+                "extrapolate",
+                2,
+                "evaluate the correlation outside the data (warning logged)",
+            ),
+            (
+                "clamp",
+                3,
+                "evaluate at the nearest point of the data envelope (warning logged)",
             ),
         ],
     ),
@@ -387,6 +408,7 @@ pub mod vr {
     pub const SPIN_SOURCE: u32 = 302;
     pub const SIDE_SLIP_SOURCE: u32 = 303;
     pub const COMPLIANCE: u32 = 304;
+    pub const ENVELOPE: u32 = 305;
     pub const REGIME: u32 = 310;
 }
 
@@ -712,7 +734,7 @@ pub const VARIABLES: &[Variable] = &[
         vr::J1 + 2,
         "Dimensionless",
         Depends::AllInputs,
-        "J3, dimensionless spin (3/8)(m/mu)(omega sqrt(ab)/U)sqrt(k)",
+        "J3, dimensionless spin (3 pi/8)(m/mu)(omega sqrt(ab)/U)sqrt(k)",
     ),
     output(
         "J4",
@@ -733,7 +755,7 @@ pub const VARIABLES: &[Variable] = &[
         vr::J1 + 5,
         "Dimensionless",
         Depends::AllInputs,
-        "J6, dimensionless spin moment",
+        "J6, dimensionless spin moment mz/(mu N sqrt(ab))",
     ),
     output(
         "J7",
@@ -752,6 +774,18 @@ pub const VARIABLES: &[Variable] = &[
             start: Some(3),
         },
         description: "Traction fluid: 1 Santotrac 50, 2 TDF-88 (report correlations), 3 user m and mu",
+        depends: Depends::None,
+    },
+    Variable {
+        name: "fluid_envelope",
+        vr: vr::ENVELOPE,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        kind: Kind::Enumeration {
+            declared: "EnvelopeRule",
+            start: Some(3),
+        },
+        description: "Outside the data of the report fluids' correlations: 1 error, 2 extrapolate, 3 clamp to the data envelope (default: start-up through U = 0 stays evaluable)",
         depends: Depends::None,
     },
     Variable {

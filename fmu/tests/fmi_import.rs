@@ -115,6 +115,7 @@ fn default_parameters() -> traction_fmu::physics::Parameters {
         e2: s("e2"),
         nu2: s("nu2"),
         fluid: traction_fmu::physics::Fluid::User,
+        envelope: traction_fmu::physics::Envelope::Clamp,
         m_user: s("m_user"),
         mu_user: s("mu_user"),
         rheology: traction_fmu::physics::Rheology::ElasticPlastic,
