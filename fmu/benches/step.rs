@@ -27,50 +27,52 @@ fn bench(c: &mut Criterion) {
         .map(|v| v.vr)
         .collect();
     let mut values = vec![0.0; outs.len()];
-    // SAFETY: valid pointers for the lifetime of the instance.
-    unsafe {
-        let inst = fmi2Instantiate(
-            name.as_ptr(),
-            FMI2_COSIMULATION,
-            g.as_ptr(),
-            std::ptr::null(),
-            &cb,
-            0,
-            0,
-        );
-        assert!(!inst.is_null());
-        let ins = [
-            vr::LOAD,
-            vr::OMEGA1,
-            vr::OMEGA2,
-            vr::SIDE_SLIP_VELOCITY,
-            vr::SPIN,
-        ];
-        let x = [800.0, 600.0, 275.0, 0.05, 20.0];
-        assert_eq!(
-            fmi2SetReal(inst, ins.as_ptr(), ins.len(), x.as_ptr()),
-            FMI2_OK
-        );
-        assert_eq!(fmi2EnterInitializationMode(inst), FMI2_OK);
-        assert!(fmi2ExitInitializationMode(inst) <= FMI2_WARNING);
-        let mut t = 0.0;
-        let mut k = 0u32;
-        c.bench_function(
-            "doStep + setReal(omega1) + getReal(25 outputs), with spin",
-            |b| {
-                b.iter(|| {
-                    // A new input each step, as in a coupled simulation.
-                    k = k.wrapping_add(1);
-                    let w1 = 600.0 + f64::from(k % 100) * 0.01;
-                    fmi2SetReal(inst, &vr::OMEGA1, 1, &w1);
-                    fmi2DoStep(inst, t, 1e-4, 1);
-                    t += 1e-4;
-                    fmi2GetReal(inst, outs.as_ptr(), outs.len(), values.as_mut_ptr());
-                    black_box(&values);
-                });
-            },
-        );
-        fmi2FreeInstance(inst);
+    for (label, spin) in [("with spin (20 rad/s)", 20.0), ("without spin", 0.0)] {
+        // SAFETY: valid pointers for the lifetime of the instance.
+        unsafe {
+            let inst = fmi2Instantiate(
+                name.as_ptr(),
+                FMI2_COSIMULATION,
+                g.as_ptr(),
+                std::ptr::null(),
+                &cb,
+                0,
+                0,
+            );
+            assert!(!inst.is_null());
+            let ins = [
+                vr::LOAD,
+                vr::OMEGA1,
+                vr::OMEGA2,
+                vr::SIDE_SLIP_VELOCITY,
+                vr::SPIN,
+            ];
+            let x = [800.0, 600.0, 275.0, 0.05, spin];
+            assert_eq!(
+                fmi2SetReal(inst, ins.as_ptr(), ins.len(), x.as_ptr()),
+                FMI2_OK
+            );
+            assert_eq!(fmi2EnterInitializationMode(inst), FMI2_OK);
+            assert!(fmi2ExitInitializationMode(inst) <= FMI2_WARNING);
+            let mut t = 0.0;
+            let mut k = 0u32;
+            c.bench_function(
+                &format!("setReal(omega1) + doStep + getReal(25 outputs), {label}"),
+                |b| {
+                    b.iter(|| {
+                        // A new input each step, as in a coupled simulation.
+                        k = k.wrapping_add(1);
+                        let w1 = 600.0 + f64::from(k % 100) * 0.01;
+                        fmi2SetReal(inst, &vr::OMEGA1, 1, &w1);
+                        fmi2DoStep(inst, t, 1e-4, 1);
+                        t += 1e-4;
+                        fmi2GetReal(inst, outs.as_ptr(), outs.len(), values.as_mut_ptr());
+                        black_box(&values);
+                    });
+                },
+            );
+            fmi2FreeInstance(inst);
+        }
     }
 }
 
