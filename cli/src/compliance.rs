@@ -43,7 +43,7 @@ impl From<DirectionArg> for Direction {
 /// Arguments of `traction compliance`.
 #[derive(Debug, Args)]
 pub struct ComplianceArgs {
-    /// Input CSV (`-` for stdin) with columns k,p0,slope,from,to[,e,nu].
+    /// Input CSV (`-` for stdin) with columns `k,p0,slope,from,to[,e,nu]`.
     #[arg(long, default_value = "-")]
     pub input: String,
     /// Output CSV (`-` for stdout).

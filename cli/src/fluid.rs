@@ -23,7 +23,7 @@ use crate::table::{Table, TableWriter, fmt_f64, output_headers};
 /// Arguments of `traction fluid`.
 #[derive(Debug, Args)]
 pub struct FluidArgs {
-    /// Input CSV (`-` for stdin): p0 (Pa), speed (m/s), theta_celsius, k, [z], [fluid].
+    /// Input CSV (`-` for stdin): p0 (Pa), speed (m/s), theta_celsius, k, optional z and fluid.
     #[arg(long, default_value = "-")]
     pub input: String,
     /// Output CSV (`-` for stdout).

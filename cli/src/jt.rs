@@ -25,7 +25,7 @@ pub enum JtModel {
 /// Arguments of `traction jt`.
 #[derive(Debug, Args)]
 pub struct JtArgs {
-    /// Input CSV (`-` for stdin) with columns k,J1,J2,J3[,dX][,D][,Z0].
+    /// Input CSV (`-` for stdin) with columns `k,J1,J2,J3[,dX][,D][,Z0]`.
     #[arg(long, default_value = "-")]
     pub input: String,
     /// Output CSV (`-` for stdout): the input columns followed by J4,J5,J6,J7.

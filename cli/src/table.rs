@@ -86,11 +86,6 @@ impl Table {
         self.rows.len()
     }
 
-    /// Whether there are no data rows.
-    pub fn is_empty(&self) -> bool {
-        self.rows.is_empty()
-    }
-
     /// Index of a column, if present.
     pub fn column(&self, name: &str) -> Option<usize> {
         self.headers.iter().position(|h| h == name)

@@ -1,4 +1,5 @@
 //! End-to-end tests of `traction fit` and `traction fluid`.
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns unwrap like the tests do
 
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
