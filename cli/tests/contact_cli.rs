@@ -3,8 +3,8 @@
 // Helpers outside #[test] functions unwrap too: any failure is a test failure.
 #![allow(clippy::unwrap_used)]
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+mod common;
+use common::traction;
 
 use traction_contact::{Body, EnvelopeRule, Fluid, OperatingState, Options, TractionContact};
 
@@ -12,20 +12,6 @@ const OUT: [&str; 18] = [
     "fx", "fy", "mz", "loss", "a", "b", "k", "p0", "m_used", "mu_used", "J1", "J2", "J3", "J4",
     "J5", "J6", "J7", "regime",
 ];
-
-fn traction(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_traction"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    if let Err(e) = child.stdin.take().unwrap().write_all(stdin.as_bytes()) {
-        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "{e}");
-    }
-    child.wait_with_output().unwrap()
-}
 
 fn ok(args: &[&str], stdin: &str) -> Vec<Vec<String>> {
     let out = traction(args, stdin);

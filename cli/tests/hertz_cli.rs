@@ -3,30 +3,14 @@
 // Helpers outside #[test] functions unwrap too: any failure is a test failure.
 #![allow(clippy::unwrap_used)]
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+mod common;
+use common::traction;
 
 use traction_hertz::{Body, Geometry};
 
 const OUT_COLUMNS: [&str; 10] = [
     "a", "b", "k", "p0", "load", "re", "e_prime", "shape_a", "shape_b", "c",
 ];
-
-fn traction(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_traction"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    // The command may exit (usage error) before reading stdin: a broken pipe
-    // is then expected, anything else is a test failure.
-    if let Err(e) = child.stdin.take().unwrap().write_all(stdin.as_bytes()) {
-        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "{e}");
-    }
-    child.wait_with_output().unwrap()
-}
 
 /// Run on stdin, expect success, return the output lines split into cells.
 fn ok(args: &[&str], stdin: &str) -> Vec<Vec<String>> {
