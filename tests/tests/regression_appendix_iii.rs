@@ -310,30 +310,49 @@ fn percent_error_definition_reproduces_printed_rows() {
     assert!(ours < rel_a && ours < rel_e);
 }
 
-#[test]
-fn iii_e_printed_coefficients_fit_worse_than_the_refit() {
-    // Evaluating the printed III-E coefficients at the curated data gives a
-    // larger residual than the refit: evidence that the printed set is a less
-    // accurate solution, not that the data or the term order are wrong.
-    let c = &CASES[4];
-    let (f, pr, x, y) = refit_printed_means(c);
-    let corr = traction_regression::Correlation::new(
-        Model::EQ15,
-        pr.means,
-        pr.coefficients,
-        f64::INFINITY,
-    )
-    .unwrap();
-    let rss_printed: f64 = x
+/// Median over the coefficients of |c / printed − 1|.
+fn median_rel_diff(c: &[f64], printed: &[f64]) -> f64 {
+    let mut d: Vec<f64> = c
         .iter()
-        .zip(&y)
-        .map(|(p, a)| (a - corr.raw(&traction_regression::Normalised::new(p, &pr.means))).powi(2))
-        .sum();
+        .zip(printed)
+        .map(|(a, p)| rel_diff(*a, *p))
+        .collect();
+    d.sort_by(f64::total_cmp);
+    d[d.len() / 2]
+}
+
+#[test]
+fn iii_e_printed_coefficients_reproduce_the_reports_estimates_not_the_least_squares_fit() {
+    // Why the III-E coefficients are not reproduced: fitting the eq. 15 design
+    // (curated inputs, printed means) to the report's OWN per-point estimates
+    // (listing EST column) gives back the printed coefficients, so the printed
+    // set, its transcription, the term order of eq. 15 and the curated inputs
+    // are consistent with each other; the least-squares fit to the listed μ is
+    // a different set with the same estimates to ~0.0007 (cond(A) ≈ 1e4: the
+    // data do not determine the high-order terms). The report's program did
+    // not return the least-squares optimum of its listed data (its RSS is
+    // larger, 8.8e-3 vs 8.03e-3); single precision does not explain it (an f32
+    // normal-equation solve, checked offline, gives the f64 optimum). Measured:
+    // median |Δc/c| 0.05 (fit to EST) vs 0.26 (fit to μ).
+    let c = &CASES[4];
+    let (f, pr, x, _) = refit_printed_means(c);
+    let est: Vec<f64> = listing(c.appendix)
+        .unwrap()
+        .iter()
+        .map(|r| r.estimate)
+        .collect();
+    let g = fit(model(c.q), &x, &est, Some(pr.means)).unwrap();
+    let to_est = median_rel_diff(g.correlation.coefficients(), &pr.coefficients);
+    let to_mu = median_rel_diff(f.correlation.coefficients(), &pr.coefficients);
     println!(
-        "III-E RSS refit {:.6e} printed coefficients {:.6e}",
-        f.residual_sum_of_squares, rss_printed
+        "III-E median |dc/c| vs printed: fit to printed EST {to_est:.3}, fit to mu {to_mu:.3}"
     );
-    assert!(rss_printed > f.residual_sum_of_squares);
+    // Tolerance: the EST column is printed to 0.001 (≈1 % of μ) and 12 of its
+    // rows carry OCR digit errors; at cond(A) ≈ 1e4 that moves the weakly
+    // determined coefficients by tens of percent, the median by ~5 %: 0.10.
+    assert!(to_est < 0.10, "{to_est}");
+    // And the least-squares set is clearly another one (measured 0.26).
+    assert!(to_mu > 2.0 * to_est, "{to_mu} vs {to_est}");
 }
 
 #[test]
