@@ -87,6 +87,10 @@ pub struct CurveArgs {
     /// Output CSV (`-` for stdout).
     #[arg(long, default_value = "-")]
     pub output: String,
+    /// Also plot the curve (Fx/N and Fy/N against the slip ratio) as `curve.png`
+    /// and `curve.svg` in this directory (created if missing).
+    #[arg(long)]
+    pub plot: Option<std::path::PathBuf>,
     /// Model options.
     #[command(flatten)]
     pub model: ModelOptions,
@@ -164,6 +168,8 @@ pub fn run(args: CurveArgs) -> Result<(), CliError> {
         _ => return Err(CliError::Usage("give --load (N) or --p0 (Pa)".into())),
     };
     let mut rows = Vec::with_capacity(args.points);
+    let mut fx_curve = Vec::with_capacity(args.points);
+    let mut fy_curve = Vec::with_capacity(args.points);
     for i in 0..args.points {
         let t = i as f64 / (args.points - 1) as f64;
         let ratio = args.from + t * (args.to - args.from);
@@ -201,6 +207,11 @@ pub fn run(args: CurveArgs) -> Result<(), CliError> {
         );
         cells.push(e.regime.name().to_string());
         rows.push(cells);
+        fx_curve.push((ratio, e.traction_x));
+        fy_curve.push((ratio, e.traction_y));
+    }
+    if let Some(dir) = &args.plot {
+        plot_curve(&args, dir, fx_curve, fy_curve)?;
     }
     let headers: Vec<String> = COLUMNS.iter().map(|s| s.to_string()).collect();
     let mut w = TableWriter::create(&args.output, &headers)?;
@@ -208,4 +219,46 @@ pub fn run(args: CurveArgs) -> Result<(), CliError> {
         w.write_row(r)?;
     }
     w.finish()
+}
+
+/// Draw the traction curve with the report-style plotting of `traction reproduce`.
+fn plot_curve(
+    args: &CurveArgs,
+    dir: &std::path::Path,
+    fx: Vec<(f64, f64)>,
+    fy: Vec<(f64, f64)>,
+) -> Result<(), CliError> {
+    use traction_reproduce::tables::{Figure, Series, Style};
+    std::fs::create_dir_all(dir).map_err(|source| CliError::Io {
+        context: format!("creating {}", dir.display()),
+        source,
+    })?;
+    let swept = match args.direction {
+        SweepDirection::Longitudinal => "slip ΔU/U",
+        SweepDirection::Side => "side slip ΔV/U",
+    };
+    let fig = Figure {
+        id: "curve".into(),
+        title: format!(
+            "traction curve: U = {} m/s, θ = {} °C, ω = {} rad/s",
+            args.u, args.theta, args.omega
+        ),
+        x_label: swept.into(),
+        y_label: "traction coefficient".into(),
+        series: vec![
+            Series {
+                name: "Fx/N".into(),
+                style: Style::Line,
+                color: 0,
+                points: fx,
+            },
+            Series {
+                name: "Fy/N".into(),
+                style: Style::Line,
+                color: 2,
+                points: fy,
+            },
+        ],
+    };
+    traction_reproduce::plot::write_figure(&fig, dir).map_err(CliError::model)
 }

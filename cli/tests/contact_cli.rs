@@ -188,3 +188,44 @@ fn curve_sweeps_the_slip_and_matches_the_library() {
     );
     assert!(e.contains("--load") && e.contains("--p0"), "{e}");
 }
+
+#[test]
+fn curve_plot_writes_png_and_svg() {
+    // The picture of `traction curve --plot DIR` (PNG signature, SVG text), and
+    // the curve it draws starts at the slope m: Fx/N ≈ m·ΔU/U at the first
+    // non-zero point (ΔU/U = 2.5e-5, J1 ≈ 0.045: the eq. 22 curve is linear to
+    // 1e-3 relative there, tolerance 1 %).
+    let dir = std::env::temp_dir().join(format!("traction-curve-plot-{}", std::process::id()));
+    let out = traction(
+        &[
+            "curve", "--rx1", "0.025", "--ry1", "0.0125", "--rx2", "0.025", "--p0", "1.9e9", "--u",
+            "20", "--m", "57.6", "--mu", "0.0956", "--to", "0.001", "--points", "41", "--plot",
+        ]
+        .into_iter()
+        .chain([dir.to_str().unwrap()])
+        .collect::<Vec<_>>(),
+        "",
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let png = std::fs::read(dir.join("curve.png")).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let svg = std::fs::read_to_string(dir.join("curve.svg")).unwrap();
+    assert!(svg.contains("<svg"));
+    let csv = String::from_utf8(out.stdout).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| *h == n).unwrap();
+    let second: Vec<&str> = lines.nth(1).unwrap().split(',').collect();
+    let ratio: f64 = second[col("slip_ratio")].parse().unwrap();
+    let tx: f64 = second[col("traction_x")].parse().unwrap();
+    assert!(
+        (tx / (57.6 * ratio) - 1.0).abs() < 0.01,
+        "{tx} vs {}",
+        57.6 * ratio
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
