@@ -67,8 +67,6 @@ impl DataTable {
     }
 }
 
-/// Appendix I (transcribed here, see the file's header).
-pub const APPENDIX_I: &str = include_str!("../data/appendix_i_reduced_traces.csv");
 /// Appendix VI spin traces (curated by traction-fluids' data set).
 pub const APPENDIX_VI: &str = include_str!("../../fluids/data/appendix_vi_spin_traces.csv");
 /// Appendix VII-A side-slip traces.

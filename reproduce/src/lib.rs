@@ -12,7 +12,7 @@
 //! figures (PNG and SVG, embedded DejaVu Sans font, no system fonts needed).
 //!
 //! Honesty rules: printed values come from the curated data files
-//! (`fluids/data/*.csv`, this crate's `data/appendix_i_reduced_traces.csv`) or
+//! (`fluids/data/*.csv`) or
 //! are transcribed in [`tables`] with the report's page or table; values the
 //! workspace cannot compute, or whose printed counterpart is not available, are
 //! listed in [`TableResult::missing`] and in [`missing_tables`], never skipped

@@ -6,7 +6,7 @@
 //! table numbers (the golden tests hold the same numbers); Appendix III from
 //! `fluids/data/printed_results.csv` and `appendix_iii_listings.csv` (through
 //! `traction-fluids`); Appendices VI, VII-A, VII-B from `fluids/data/*.csv`;
-//! Appendix I from this crate's `data/appendix_i_reduced_traces.csv`.
+//! Appendix I from `traction-fluids` (`fluids/data/appendix_i_traces.csv`).
 
 use rayon::prelude::*;
 use traction_compliance::{Direction, DiscMaterial, convert_slope_same_contact};
@@ -16,7 +16,7 @@ use traction_kinematics::{j2 as j2_group, spin_factor, tilted_disc_spin_per_spee
 use traction_regression::{Model as RegModel, fit};
 use traction_rheology::{Accuracy, Inputs, Model, closed, evaluate};
 
-use crate::data::{APPENDIX_I, APPENDIX_VI, APPENDIX_VII_A, APPENDIX_VII_B, DataTable};
+use crate::data::{APPENDIX_VI, APPENDIX_VII_A, APPENDIX_VII_B, DataTable};
 use crate::{Deviation, FigureKind, ReproduceError, Row, TableResult, Tolerance};
 
 const GPA: f64 = 1e9;
@@ -474,30 +474,22 @@ struct TraceI {
 }
 
 fn appendix_i_rows() -> Result<Vec<TraceI>, ReproduceError> {
-    let t = DataTable::parse("appendix_i_reduced_traces.csv", APPENDIX_I)?;
-    let c = |n| t.col(n);
-    let (ct, ck, cm, cmu, cdv, cjs, cj5) = (
-        c("trace")?,
-        c("k")?,
-        c("m")?,
-        c("mu")?,
-        c("dV_U")?,
-        c("JS")?,
-        c("J5")?,
-    );
-    (0..t.rows.len())
-        .map(|i| {
-            Ok(TraceI {
-                trace: t.str(i, ct).to_string(),
-                k: t.num(i, ck)?,
-                m: t.num(i, cm)?,
-                mu: t.num(i, cmu)?,
-                dv_u: t.num(i, cdv)?,
-                js: t.num(i, cjs)?,
-                j5: t.num(i, cj5)?,
-            })
+    // The curated copy in traction-fluids (`fluids/data/appendix_i_traces.csv`,
+    // with its OCR corrections checked by column consistency).
+    let points =
+        traction_fluids::appendix_i_traces().map_err(|e| model_err("Appendix I data", e))?;
+    Ok(points
+        .into_iter()
+        .map(|p| TraceI {
+            trace: p.trace,
+            k: p.k,
+            m: p.m,
+            mu: p.mu,
+            dv_u: p.dv_over_u,
+            js: p.js,
+            j5: p.j5,
         })
-        .collect()
+        .collect())
 }
 
 /// Appendix I, printed reduced slip JS recomputed from m, μ, ΔV/U (relative).
