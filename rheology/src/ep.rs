@@ -7,7 +7,8 @@
 //!
 //! * elastic segments: Z is a polynomial in X (closed form, integrated
 //!   exactly); first yield or reloading is the first root of
-//!   |Z(X)|² − L(X)² (sampled on a fixed s grid, then safeguarded Newton);
+//!   the quartic |Z(X)|² − L(X)², bracketed exactly between the turning
+//!   points of its cubic factor, then safeguarded Newton;
 //! * plastic segments: Z = L·n with the unit vector n rotating at
 //!   dn/ds = (2/3)(v·t)·t, t ⟂ n (Prandtl–Reuss consistency; the 1/√(c−X)
 //!   singularity of dθ/dX is absorbed by dX/ds = c·cos s). Classical RK4 on
@@ -23,8 +24,6 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 use crate::quad;
 
-/// Number of sample intervals in s ∈ [−π/2, π/2] used to bracket yield points.
-const M_SAMPLE: usize = 32;
 /// Largest number of RK4 sub-steps per step before the quasi-steady branch.
 const MAX_SUB: usize = 16;
 /// Largest number of elastic ↔ plastic switches per strip.
@@ -118,31 +117,79 @@ impl Strip {
     }
 
     /// First X > x0 where the elastic stress from (x0, z0) reaches the limit.
+    ///
+    /// With e = X − x0, f = |Z|² − L² = f(x0) + e·g(e) where g is the cubic
+    /// p1 + p2·e + p3·e² + p4·e³ (Z is quadratic in e, L² quadratic in X).
+    /// f(x0) = 0 (the inlet, or the limit where unloading began), so the
+    /// first crossing is the first sign change of g: g is monotone between
+    /// the roots of the quadratic g', so f is evaluated at those points and at
+    /// the outlet (where f = |Z|² ≥ 0), and the first bracket with f ≥ 0 at
+    /// its end holds exactly one crossing, refined by safeguarded Newton.
     fn find_yield(&self, x0: f64, z0: (f64, f64)) -> f64 {
         let c = self.c;
+        let span = c - x0;
+        if span <= 0.0 {
+            return c;
+        }
+        let b = self.vy(x0);
+        let q = self.q2;
+        let p2 = self.a * self.a + b * b + z0.1 * q + 2.25;
+        let p3 = b * q;
+        let p4 = 0.25 * q * q;
+        // Roots of g'(e) = p2 + 2·p3·e + 3·p4·e² inside (0, span).
+        let mut pts = [span; 3];
+        let (qa, qb, qc) = (3.0 * p4, 2.0 * p3, p2);
+        let (mut r1, mut r2) = (f64::NAN, f64::NAN);
+        if qa != 0.0 {
+            let disc = qb * qb - 4.0 * qa * qc;
+            if disc >= 0.0 {
+                let t = -0.5 * (qb + qb.signum() * disc.sqrt());
+                r1 = t / qa;
+                r2 = if t != 0.0 { qc / t } else { -r1 };
+            }
+        } else if qb != 0.0 {
+            r1 = -qc / qb;
+        }
+        if r1 > r2 {
+            std::mem::swap(&mut r1, &mut r2);
+        }
+        let mut n = 0;
+        for r in [r1, r2] {
+            if r > 0.0 && r < span {
+                pts[n] = r;
+                n += 1;
+            }
+        }
         let eps = 1e-13 * c;
-        let (cd, sd) = (COS_PI_M, SIN_PI_M);
-        let (mut cj, mut sj) = (1.0_f64, 0.0_f64);
-        let mut lo = x0;
-        for j in 1..=M_SAMPLE {
-            (cj, sj) = (cj * cd - sj * sd, sj * cd + cj * sd);
-            let xj = if j == M_SAMPLE { c } else { -c * cj };
-            if xj <= x0 + eps {
+        let p1 = 2.0 * (z0.0 * self.a + z0.1 * b) + 4.5 * x0;
+        let p0 = z0.0 * z0.0 + z0.1 * z0.1 - 2.25 * (c * c - x0 * x0);
+        // g at the bracket's low end (for the false-position start).
+        let (mut lo, mut glo) = (x0, p1);
+        for &e in &pts[..=n] {
+            let xj = if e >= span { c } else { x0 + e };
+            if xj <= x0 + eps && xj < c {
                 continue;
             }
             let (f, _) = self.f_el(x0, z0, xj);
+            let gj = (f - p0) / (xj - x0);
             if f >= 0.0 || f.is_nan() {
-                return self.refine(x0, z0, lo, xj);
+                let start = if glo < 0.0 && gj > glo {
+                    lo + (xj - lo) * glo / (glo - gj)
+                } else {
+                    xj
+                };
+                return self.refine(x0, z0, lo, xj, start);
             }
-            lo = xj;
+            (lo, glo) = (xj, gj);
         }
         c
     }
 
-    /// Safeguarded Newton for the first crossing f ≥ 0 in (lo, hi].
-    fn refine(&self, x0: f64, z0: (f64, f64), mut lo: f64, mut hi: f64) -> f64 {
+    /// Safeguarded Newton for the first crossing f ≥ 0 in (lo, hi], from
+    /// `start` (or hi if it is outside the bracket).
+    fn refine(&self, x0: f64, z0: (f64, f64), mut lo: f64, mut hi: f64, start: f64) -> f64 {
         let ftol = 1e-15 * (1.0 + 2.25 * self.c * self.c);
-        let mut x = hi;
+        let mut x = if start > lo && start < hi { start } else { hi };
         for _ in 0..100 {
             let (f, fp) = self.f_el(x0, z0, x);
             if f.abs() <= ftol {
@@ -194,21 +241,43 @@ impl Strip {
     }
 
     /// One RK4 step of length h; (c2, s2) = (cos h/2, sin h/2).
+    ///
+    /// The integrands of the strip sums are Zx·dX/ds = w·nx, Zy·dX/ds = w·ny
+    /// and Zy·X·dX/ds = w·X·ny with w = L·dX/ds = (3/2)c²cos²s; the two
+    /// midpoint stages share their node quantities.
+    #[inline]
     fn rk4(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+        let c = self.c;
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
-        let (k1x, k1y, a1) = self.deriv(p.sn, p.cs, p.nx, p.ny);
-        let (k2x, k2y, a2) = self.deriv(sm, cm, p.nx + 0.5 * h * k1x, p.ny + 0.5 * h * k1y);
-        let (k3x, k3y, a3) = self.deriv(sm, cm, p.nx + 0.5 * h * k2x, p.ny + 0.5 * h * k2y);
-        let (k4x, k4y, a4) = self.deriv(s1, c1, p.nx + h * k3x, p.ny + h * k3y);
+        let (x0, xm, x1) = (c * p.sn, c * sm, c * s1);
+        let w = 1.5 * c * c;
+        let (w0, wm, w1) = (w * p.cs * p.cs, w * cm * cm, w * c1 * c1);
+        let k = 2.0 / 3.0;
+        let av = k * self.a;
+        let (vy0, vym, vy1) = (k * self.vy(x0), k * self.vy(xm), k * self.vy(x1));
+        let hh = 0.5 * h;
+        // Stage 1 at s0.
+        let (n1x, n1y) = (p.nx, p.ny);
+        let om1 = vy0 * n1x - av * n1y;
+        // Stage 2 at the midpoint.
+        let (n2x, n2y) = (n1x - hh * om1 * n1y, n1y + hh * om1 * n1x);
+        let om2 = vym * n2x - av * n2y;
+        // Stage 3 at the midpoint.
+        let (n3x, n3y) = (n1x - hh * om2 * n2y, n1y + hh * om2 * n2x);
+        let om3 = vym * n3x - av * n3y;
+        // Stage 4 at s1.
+        let (n4x, n4y) = (n1x - h * om3 * n3y, n1y + h * om3 * n3x);
+        let om4 = vy1 * n4x - av * n4y;
         let h6 = h / 6.0;
-        let nx = p.nx + h6 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-        let ny = p.ny + h6 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
+        let nx = n1x - h6 * (om1 * n1y + 2.0 * om2 * n2y + 2.0 * om3 * n3y + om4 * n4y);
+        let ny = n1y + h6 * (om1 * n1x + 2.0 * om2 * n2x + 2.0 * om3 * n3x + om4 * n4x);
         let r = (nx * nx + ny * ny).sqrt();
+        let (mx, my) = (2.0 * wm * (n2x + n3x), 2.0 * wm * (n2y + n3y));
         let mut acc = p.acc;
-        acc.ix += h6 * (a1.ix + 2.0 * a2.ix + 2.0 * a3.ix + a4.ix);
-        acc.iy += h6 * (a1.iy + 2.0 * a2.iy + 2.0 * a3.iy + a4.iy);
-        acc.ixy += h6 * (a1.ixy + 2.0 * a2.ixy + 2.0 * a3.ixy + a4.ixy);
+        acc.ix += h6 * (w0 * n1x + mx + w1 * n4x);
+        acc.iy += h6 * (w0 * n1y + my + w1 * n4y);
+        acc.ixy += h6 * (x0 * w0 * n1y + xm * my + x1 * w1 * n4y);
         PState {
             sn: s1,
             cs: c1,
@@ -239,7 +308,7 @@ impl Strip {
     }
 
     /// Advance the plastic state by h (cos/sin of h/2 given).
-    fn advance(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+    fn advance(&self, p: &PState, h: f64, c2: f64, s2: f64, cache: &mut (f64, f64, f64)) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
         let (vy0, vy1) = (self.vy(self.c * p.sn), self.vy(self.c * s1));
@@ -252,7 +321,11 @@ impl Strip {
         if m <= MAX_SUB as f64 {
             let m = m as usize;
             let hs = h / m as f64;
-            let (s2s, c2s) = (0.5 * hs).sin_cos();
+            if cache.0 != hs {
+                let (s2s, c2s) = (0.5 * hs).sin_cos();
+                *cache = (hs, c2s, s2s);
+            }
+            let (_, c2s, s2s) = *cache;
             let mut q = *p;
             for _ in 0..m {
                 q = self.rk4(&q, hs, c2s, s2s);
@@ -298,6 +371,8 @@ impl Strip {
         let nsteps = ((span / s_step).ceil() as usize).max(1);
         let h = span / nsteps as f64;
         let (s2, c2) = (0.5 * h).sin_cos();
+        // (sub-step, cos, sin of half of it) of the last sub-divided step.
+        let mut cache = (f64::NAN, 1.0, 0.0);
         let mut p = PState {
             sn,
             cs,
@@ -306,7 +381,7 @@ impl Strip {
             acc: StripSums::default(),
         };
         for i in 0..nsteps {
-            let mut q = self.advance(&p, h, c2, s2);
+            let mut q = self.advance(&p, h, c2, s2, &mut cache);
             if i + 1 == nsteps {
                 q.sn = 1.0;
                 q.cs = 0.0;
@@ -326,7 +401,7 @@ impl Strip {
                             0.5 * (tl + th)
                         };
                         let (st, ct) = (0.5 * t).sin_cos();
-                        let r = self.advance(&p, t, ct, st);
+                        let r = self.advance(&p, t, ct, st, &mut cache);
                         let gr = self.g(r.sn, r.cs, r.nx, r.ny);
                         best = r;
                         if gr.abs() < 1e-13 {
@@ -404,10 +479,6 @@ impl Strip {
         acc
     }
 }
-
-/// cos(π/M_SAMPLE), sin(π/M_SAMPLE) for M_SAMPLE = 32.
-const COS_PI_M: f64 = 0.995_184_726_672_196_9;
-const SIN_PI_M: f64 = 0.098_017_140_329_560_6;
 
 /// Scaled inputs: J1/√k, J2/√k + J3·ΔX/k, J3, J3/k.
 #[derive(Debug, Clone, Copy)]
@@ -565,12 +636,6 @@ pub(crate) fn solve(sc: &Scaled, res: &Resolution) -> (f64, f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn sample_constants() {
-        let (s, c) = (PI / M_SAMPLE as f64).sin_cos();
-        assert!((s - SIN_PI_M).abs() < 1e-16 && (c - COS_PI_M).abs() < 1e-16);
-    }
 
     #[test]
     fn pure_slip_strip_matches_closed_form() {
