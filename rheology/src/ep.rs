@@ -380,8 +380,18 @@ impl Strip {
             ny: n.1,
             acc: StripSums::default(),
         };
+        // vy is linear in X, so |v| on the segment is largest at one of its
+        // ends: if κ·h is below the RK4 margin there, no step needs the
+        // sub-division test of `advance`.
+        let vmax = self.vy(self.c * sn).abs().max(self.vy(self.c).abs());
+        let kmax = (2.0 / 3.0) * (self.a * self.a + vmax * vmax).sqrt() * h;
+        let nonstiff = kmax * (1.0 + 1e-12) <= KAPPA_H;
         for i in 0..nsteps {
-            let mut q = self.advance(&p, h, c2, s2, &mut cache);
+            let mut q = if nonstiff {
+                self.rk4(&p, h, c2, s2)
+            } else {
+                self.advance(&p, h, c2, s2, &mut cache)
+            };
             if i + 1 == nsteps {
                 q.sn = 1.0;
                 q.cs = 0.0;
