@@ -12,7 +12,9 @@
 //! * plastic segments: Z = L·n with the unit vector n rotating at
 //!   dn/ds = (2/3)(v·t)·t, t ⟂ n (Prandtl–Reuss consistency; the 1/√(c−X)
 //!   singularity of dθ/dX is absorbed by dX/ds = c·cos s). Classical RK4 on
-//!   (n, ∫Zx dX, ∫Zy dX, ∫Zy X dX); steps are sub-divided where the relaxation
+//!   (n, ∫Zx dX, ∫Zy dX, ∫Zy X dX) (a segment whose largest κ·h stays below
+//!   the stability margin may use a longer step, see `solve_adaptive`);
+//!   steps are sub-divided where the relaxation
 //!   rate (2/3)|v| makes RK4 unstable, and where it exceeds 16 sub-steps per
 //!   step n follows its quasi-steady solution θ = α − asin(α'/κ) (the
 //!   rigid/plastic direction with the first elastic lag), integrated by
@@ -245,7 +247,7 @@ impl Strip {
     /// The integrands of the strip sums are Zx·dX/ds = w·nx, Zy·dX/ds = w·ny
     /// and Zy·X·dX/ds = w·X·ny with w = L·dX/ds = (3/2)c²cos²s; the two
     /// midpoint stages share their node quantities.
-    #[inline]
+    #[inline(always)]
     fn rk4(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
         let c = self.c;
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
@@ -361,15 +363,28 @@ impl Strip {
         n: (f64, f64),
         acc: &mut StripSums,
         allow_unload: bool,
-        s_step: f64,
+        (s_step, s_step_smooth): (f64, f64),
     ) -> PlasticEnd {
         let s0 = sn.atan2(cs);
         let span = FRAC_PI_2 - s0;
         if span <= 0.0 {
             return PlasticEnd::Outlet;
         }
-        let nsteps = ((span / s_step).ceil() as usize).max(1);
-        let h = span / nsteps as f64;
+        // vy is linear in X, so |v| on the segment is largest at one of its
+        // ends: if κ·h is below the RK4 margin there, no step needs the
+        // sub-division test of `advance`. Such non-stiff segments may use
+        // the longer step `s_step_smooth`.
+        let vmax = self.vy(self.c * sn).abs().max(self.vy(self.c).abs());
+        let kappa = (2.0 / 3.0) * (self.a * self.a + vmax * vmax).sqrt();
+        let steps = |st: f64| ((span / st).ceil() as usize).max(1);
+        let mut nsteps = steps(s_step_smooth);
+        let mut h = span / nsteps as f64;
+        let mut nonstiff = kappa * h * (1.0 + 1e-12) <= KAPPA_H;
+        if !nonstiff {
+            nsteps = steps(s_step);
+            h = span / nsteps as f64;
+            nonstiff = kappa * h * (1.0 + 1e-12) <= KAPPA_H;
+        }
         let (s2, c2) = (0.5 * h).sin_cos();
         // (sub-step, cos, sin of half of it) of the last sub-divided step.
         let mut cache = (f64::NAN, 1.0, 0.0);
@@ -380,12 +395,6 @@ impl Strip {
             ny: n.1,
             acc: StripSums::default(),
         };
-        // vy is linear in X, so |v| on the segment is largest at one of its
-        // ends: if κ·h is below the RK4 margin there, no step needs the
-        // sub-division test of `advance`.
-        let vmax = self.vy(self.c * sn).abs().max(self.vy(self.c).abs());
-        let kmax = (2.0 / 3.0) * (self.a * self.a + vmax * vmax).sqrt() * h;
-        let nonstiff = kmax * (1.0 + 1e-12) <= KAPPA_H;
         for i in 0..nsteps {
             let mut q = if nonstiff {
                 self.rk4(&p, h, c2, s2)
@@ -448,7 +457,7 @@ impl Strip {
     }
 
     /// Integrate the strip from the inlet to the outlet.
-    pub(crate) fn integrate(&self, s_step: f64) -> StripSums {
+    pub(crate) fn integrate(&self, s_step: f64, s_step_smooth: f64) -> StripSums {
         let c = self.c;
         let mut acc = StripSums::default();
         if c <= 0.0 {
@@ -476,7 +485,7 @@ impl Strip {
                 (z.0 / m, z.1 / m),
                 &mut acc,
                 switches < MAX_SWITCH,
-                s_step,
+                (s_step, s_step_smooth),
             ) {
                 PlasticEnd::Outlet => break,
                 PlasticEnd::Unload { x, z } => {
@@ -633,14 +642,21 @@ pub(crate) fn contact_integral_adaptive(
     to_j(sc, &total)
 }
 
-/// Elastic/plastic (J4, J5, J6), adaptive in Y, fixed s-step.
-pub(crate) fn solve_adaptive(sc: &Scaled, n: usize, tol: f64, s_step: f64) -> (f64, f64, f64) {
-    contact_integral_adaptive(sc, n, tol, 10, |s| s.integrate(s_step))
+/// Elastic/plastic (J4, J5, J6), adaptive in Y; s-step `s_step`, or
+/// `s_step_smooth` (≥ `s_step`) on plastic segments that are non-stiff at it.
+pub(crate) fn solve_adaptive(
+    sc: &Scaled,
+    n: usize,
+    tol: f64,
+    s_step: f64,
+    s_step_smooth: f64,
+) -> (f64, f64, f64) {
+    contact_integral_adaptive(sc, n, tol, 10, |s| s.integrate(s_step, s_step_smooth))
 }
 
 /// Elastic/plastic (J4, J5, J6) by strip integration.
 pub(crate) fn solve(sc: &Scaled, res: &Resolution) -> (f64, f64, f64) {
-    contact_integral(sc, res, |s| s.integrate(res.s_step))
+    contact_integral(sc, res, |s| s.integrate(res.s_step, res.s_step))
 }
 
 #[cfg(test)]
@@ -666,7 +682,7 @@ mod tests {
         // The yield point is found to round-off; the plastic part is RK4
         // (Simpson) on the smooth 1.5·cos²s: error ≈ 5e-8 at h = 0.1 and
         // O(h⁴), so ≈ 5e-12 at h = 0.01; tolerance 1e-10.
-        let r = st.integrate(0.01);
+        let r = st.integrate(0.01, 0.01);
         assert!((r.ix - exact).abs() < 1e-10, "{} {}", r.ix, exact);
         assert!(r.iy.abs() < 1e-15);
     }
