@@ -254,7 +254,7 @@ pub enum Model {
 /// Meaning: the result is within `tol` of the converged solution of the same
 /// model (verified in rheology/tests/convergence.rs on 13 cases, k 0.05–20,
 /// slip only to J3 = 100, for tol = 1e-2, 1e-3, 1e-4, against a 128-panel,
-/// h = 0.004 reference; worst observed error/tol ≈ 0.5). The elastic/plastic
+/// h = 0.004 reference; worst observed error/tol ≈ 0.3). The elastic/plastic
 /// integrator is fourth order in the s-step and, in Y, spectrally convergent
 /// except across strips where the flow pattern changes (second order there),
 /// which the adaptive panel halving of [`evaluate`] localises. tol < 1e-4
