@@ -5,15 +5,13 @@ use std::sync::OnceLock;
 /// Largest number of Gauss–Legendre points per panel that is cached.
 pub(crate) const MAX_GL: usize = 24;
 
-/// Nodes and weights on [-1, 1] for n = 1..=MAX_GL points.
-fn table() -> &'static [Vec<(f64, f64)>] {
-    static T: OnceLock<Vec<Vec<(f64, f64)>>> = OnceLock::new();
-    T.get_or_init(|| (0..=MAX_GL).map(gauss_legendre).collect())
-}
-
-/// The n-point Gauss–Legendre rule on [-1, 1] (n clamped to 1..=MAX_GL).
+/// The n-point Gauss–Legendre rule on [-1, 1] (n clamped to 1..=MAX_GL),
+/// computed on first use of that n (each rule separately, so a first call
+/// that needs one rule does not pay for all of them).
 pub(crate) fn rule(n: usize) -> &'static [(f64, f64)] {
-    &table()[n.clamp(1, MAX_GL)]
+    static T: [OnceLock<Vec<(f64, f64)>>; MAX_GL + 1] = [const { OnceLock::new() }; MAX_GL + 1];
+    let n = n.clamp(1, MAX_GL);
+    T[n].get_or_init(|| gauss_legendre(n))
 }
 
 /// Newton iteration on the Legendre polynomial P_n (three-term recurrence).
