@@ -252,3 +252,58 @@ def test_bad_input_is_an_error_with_a_logged_message_and_the_instance_recovers(f
     assert mz != 0.0 and loss >= 0.0
     fmu.terminate()
     fmu.freeInstance()
+
+
+def test_viscoelastic_and_spin_peak_through_fmpy(fmu_path):
+    """The new parameters through a real importer: a negative Deborah number is
+    fmi2Error with a logged message naming `deborah`; D = inf gives the
+    elastic/plastic forces; use_spin_peak scales the forces by mu_spin_user."""
+    from fmpy import extract, read_model_description
+    from fmpy.fmi1 import FMICallException
+    from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+
+    md = read_model_description(fmu_path)
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    unzipped = extract(fmu_path)
+    log = []
+
+    def logger(env, name, status, category, message):
+        log.append((status, category.decode(), message.decode()))
+
+    callbacks = fmi2CallbackFunctions()
+    callbacks.logger = fmi2CallbackLoggerTYPE(logger)
+
+    def run(reals, ints=(), bools=()):
+        fmu = FMU2Slave(
+            guid=md.guid, unzipDirectory=unzipped, modelIdentifier="TractionContact", instanceName="visco"
+        )
+        fmu.instantiate(callbacks=callbacks)
+        fmu.setupExperiment(startTime=0.0)
+        for name, x in reals:
+            fmu.setReal([vr[name]], [x])
+        for name, x in ints:
+            fmu.setInteger([vr[name]], [x])
+        for name, x in bools:
+            fmu.setBoolean([vr[name]], [x])
+        fmu.setReal([vr["omega1"], vr["omega2"], vr["spin"]], [600.0, 270.0, 20.0])
+        fmu.enterInitializationMode()
+        try:
+            fmu.exitInitializationMode()
+            return fmu.getReal([vr["fx"], vr["mz"], vr["mu_force"], vr["J4"]])
+        finally:
+            fmu.freeInstance()
+
+    with pytest.raises(FMICallException):
+        run([("deborah", -1.0)], ints=[("rheology_model", 3)])
+    assert log and log[-1][0] == 3 and log[-1][1] == "logStatusError", log
+    assert "deborah" in log[-1][2], log[-1]
+    ep = run([])
+    inf = run([("deborah", float("inf"))], ints=[("rheology_model", 3)])
+    assert inf == ep
+    visco = run([("deborah", 0.5), ("z0", 0.3)], ints=[("rheology_model", 3)])
+    assert visco[0] < 0.99 * ep[0]
+    spin_peak = run([("mu_spin_user", 0.06)], bools=[("use_spin_peak", True)])
+    assert spin_peak[2] == 0.06
+    # Same J groups, forces scaled by mu_s/mu (1e-12 relative).
+    assert abs(spin_peak[0] / ep[0] - 0.06 / 0.075) < 1e-12
+    assert abs(spin_peak[3] / ep[3] - 1.0) < 1e-12

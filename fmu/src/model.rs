@@ -203,6 +203,7 @@ pub struct Snapshot {
     inputs: [f64; N_INPUTS],
     enums: [i32; N_ENUMS],
     compliance: bool,
+    spin_peak: bool,
     outputs: [f64; N_OUT],
     regime: i32,
     dirty: bool,
@@ -212,7 +213,7 @@ pub struct Snapshot {
 const N_ENUMS: usize = 5;
 const MAGIC: &[u8; 8] = b"TRACFMU2";
 const SNAPSHOT_LEN: usize =
-    8 + 1 + 8 * 2 + 8 * N_REAL_PARAMS + 8 * N_INPUTS + 4 * N_ENUMS + 1 + 8 * N_OUT + 4 + 2 + 16;
+    8 + 1 + 8 * 2 + 8 * N_REAL_PARAMS + 8 * N_INPUTS + 4 * N_ENUMS + 2 + 8 * N_OUT + 4 + 2 + 16;
 
 /// Index of an Enumeration parameter in [`Snapshot::enums`].
 fn enum_index(r: u32) -> Option<usize> {
@@ -229,6 +230,7 @@ impl Snapshot {
         let mut inputs = [0.0; N_INPUTS];
         let mut enums = [0; N_ENUMS];
         let mut compliance = false;
+        let mut spin_peak = false;
         for v in variables::VARIABLES {
             match (v.causality, v.kind) {
                 (Causality::Parameter, Kind::Real { start: Some(s), .. }) => {
@@ -242,7 +244,13 @@ impl Snapshot {
                         enums[i] = s;
                     }
                 }
-                (Causality::Parameter, Kind::Boolean { start: Some(s) }) => compliance = s,
+                (Causality::Parameter, Kind::Boolean { start: Some(s) }) => {
+                    if v.vr == vr::SPIN_PEAK {
+                        spin_peak = s;
+                    } else {
+                        compliance = s;
+                    }
+                }
                 _ => {}
             }
         }
@@ -254,6 +262,7 @@ impl Snapshot {
             inputs,
             enums,
             compliance,
+            spin_peak,
             outputs: [0.0; N_OUT],
             regime: 0,
             dirty: true,
@@ -274,6 +283,7 @@ impl Snapshot {
             b.extend_from_slice(&e.to_le_bytes());
         }
         b.push(u8::from(self.compliance));
+        b.push(u8::from(self.spin_peak));
         for x in &self.outputs {
             b.extend_from_slice(&x.to_bits().to_le_bytes());
         }
@@ -338,6 +348,7 @@ impl Snapshot {
             *e = i(take(4));
         }
         let compliance = take(1)[0] != 0;
+        let spin_peak = take(1)[0] != 0;
         let mut outputs = [0.0; N_OUT];
         for p in &mut outputs {
             *p = f(take(8));
@@ -353,6 +364,7 @@ impl Snapshot {
             inputs,
             enums,
             compliance,
+            spin_peak,
             outputs,
             regime,
             dirty,
@@ -371,10 +383,13 @@ pub struct TractionFmu {
     mode: Mode,
 }
 
+/// Number of Real outputs before J1 (VR 200..=218) in [`Snapshot::outputs`].
+const N_OUT_BEFORE_J: usize = (vr::MU_FORCE - vr::FX) as usize + 1;
+
 fn out_index(vr: u32) -> Option<usize> {
     match vr {
-        vr::FX..=vr::MU_USED => Some((vr - vr::FX) as usize),
-        vr::J1..=vr::J7 => Some((vr - vr::J1) as usize + 18),
+        vr::FX..=vr::MU_FORCE => Some((vr - vr::FX) as usize),
+        vr::J1..=vr::J7 => Some((vr - vr::J1) as usize + N_OUT_BEFORE_J),
         _ => None,
     }
 }
@@ -476,6 +491,10 @@ impl TractionFmu {
             m_user: p[vr::M_USER as usize - 1],
             mu_user: p[vr::MU_USER as usize - 1],
             rheology,
+            deborah: p[vr::DEBORAH as usize - 1],
+            z0: p[vr::Z0 as usize - 1],
+            spin_peak: self.s.spin_peak,
+            mu_spin_user: p[vr::MU_SPIN_USER as usize - 1],
             compliance: self.s.compliance,
             u_reg: p[vr::U_REG as usize - 1],
         })
@@ -579,6 +598,7 @@ impl TractionFmu {
             omega,
             o.m,
             o.mu,
+            o.mu_force,
         ];
         if let Some(bad) = values.iter().chain(&o.j).position(|v| !v.is_finite()) {
             // Defensive: the physics promises finite outputs for finite inputs.
@@ -587,8 +607,8 @@ impl TractionFmu {
                 op.load
             )));
         }
-        self.s.outputs[..18].copy_from_slice(&values);
-        self.s.outputs[18..].copy_from_slice(&o.j);
+        self.s.outputs[..N_OUT_BEFORE_J].copy_from_slice(&values);
+        self.s.outputs[N_OUT_BEFORE_J..].copy_from_slice(&o.j);
         self.s.regime = o.regime.map_or(0, |r| r as i32);
         self.s.dirty = false;
         if o.outside_envelope && !self.s.envelope_warned {
@@ -613,6 +633,9 @@ impl TractionFmu {
         }
     }
 }
+
+/// Largest value reference of a Real parameter (VR 1..=N_REAL_PARAMS).
+const PARAM_VR_MAX: u32 = N_REAL_PARAMS as u32;
 
 const SETTABLE_PARAM_MODES: &[Mode] = &[Mode::Instantiated, Mode::Initialization];
 const SETTABLE_INPUT_MODES: &[Mode] =
@@ -708,7 +731,7 @@ impl CoSimulation for TractionFmu {
         }
         for (&r, v) in vrs.iter().zip(values.iter_mut()) {
             *v = match r {
-                1..=15 => self.s.params[r as usize - 1],
+                1..=PARAM_VR_MAX => self.s.params[r as usize - 1],
                 vr::LOAD..=vr::INLET_TEMPERATURE => self.s.inputs[(r - vr::LOAD) as usize],
                 _ => match out_index(r) {
                     Some(i) => self.s.outputs[i],
@@ -732,7 +755,9 @@ impl CoSimulation for TractionFmu {
         for (&r, &x) in vrs.iter().zip(values) {
             let v = var(r, "fmi2SetReal").map_err(|e| self.fail(e))?;
             let is_real = matches!(v.kind, Kind::Real { .. });
-            let radius = matches!(r, vr::RX1..=vr::RY2);
+            // Radii (±inf = flat) and the viscoelastic D, Z0 (+inf = a limit
+            // model) accept infinity; the physics checks the sign.
+            let may_be_infinite = matches!(r, vr::RX1..=vr::RY2 | vr::DEBORAH | vr::Z0);
             match v.causality {
                 _ if !is_real => {
                     return Err(self.fail(FmuError::error(format!(
@@ -748,7 +773,7 @@ impl CoSimulation for TractionFmu {
                 }
                 Causality::Parameter => {
                     self.require("fmi2SetReal of a fixed parameter", SETTABLE_PARAM_MODES)?;
-                    if x.is_nan() || (x.is_infinite() && !radius) {
+                    if x.is_nan() || (x.is_infinite() && !may_be_infinite) {
                         return Err(self.fail(FmuError::error(format!(
                             "fmi2SetReal: {} = {x} is not a finite number",
                             v.name
@@ -841,7 +866,7 @@ impl CoSimulation for TractionFmu {
     fn get_boolean(&mut self, vrs: &[u32], values: &mut [bool]) -> FmuResult {
         self.require("fmi2GetBoolean", GET_MODES)?;
         for (&r, v) in vrs.iter().zip(values.iter_mut()) {
-            if r != vr::COMPLIANCE {
+            if r != vr::COMPLIANCE && r != vr::SPIN_PEAK {
                 let e = FmuError::error(format!(
                     "fmi2GetBoolean: value reference {r} is not a Boolean variable of this FMU"
                 ));
@@ -851,20 +876,28 @@ impl CoSimulation for TractionFmu {
                     self.fail(e)
                 });
             }
-            *v = self.s.compliance;
+            *v = if r == vr::SPIN_PEAK {
+                self.s.spin_peak
+            } else {
+                self.s.compliance
+            };
         }
         Ok(Status::Ok)
     }
 
     fn set_boolean(&mut self, vrs: &[u32], values: &[bool]) -> FmuResult {
         for (&r, &x) in vrs.iter().zip(values) {
-            if r != vr::COMPLIANCE {
+            if r != vr::COMPLIANCE && r != vr::SPIN_PEAK {
                 return Err(self.fail(FmuError::error(format!(
                     "fmi2SetBoolean: value reference {r} is not a Boolean variable of this FMU"
                 ))));
             }
             self.require("fmi2SetBoolean of a fixed parameter", SETTABLE_PARAM_MODES)?;
-            self.s.compliance = x;
+            if r == vr::SPIN_PEAK {
+                self.s.spin_peak = x;
+            } else {
+                self.s.compliance = x;
+            }
             self.contact = None;
             self.s.dirty = true;
         }
@@ -1071,7 +1104,7 @@ mod tests {
         f.enter_initialization_mode().unwrap();
         let mut log = Capture(Vec::new());
         f.exit_initialization_mode(&mut log).unwrap();
-        let all: Vec<u32> = (vr::FX..=vr::MU_USED).chain(vr::J1..=vr::J7).collect();
+        let all: Vec<u32> = (vr::FX..=vr::MU_FORCE).chain(vr::J1..=vr::J7).collect();
         let mut o = vec![0.0; all.len()];
         for k in 0..200 {
             // Run up from rest with 1 % slip.
@@ -1104,7 +1137,7 @@ mod tests {
         let back = TractionFmu::deserialize_state(&bytes).unwrap();
         assert_eq!(TractionFmu::serialize_state(&back), bytes);
         let mut o1 = [0.0; N_OUT];
-        let all: Vec<u32> = (vr::FX..=vr::MU_USED).chain(vr::J1..=vr::J7).collect();
+        let all: Vec<u32> = (vr::FX..=vr::MU_FORCE).chain(vr::J1..=vr::J7).collect();
         f.do_step(0.1, 0.1, &mut NullLogger).unwrap();
         f.get_real(&all, &mut o1, &mut NullLogger).unwrap();
         f.set_real(&[vr::OMEGA1], &[1.0]).unwrap();
@@ -1149,5 +1182,231 @@ mod tests {
                 .message
                 .contains("mu_user")
         );
+    }
+
+    /// Body 1 and body 2 of the default parameters (ry2 = 0 is flat).
+    fn default_bodies(e2: f64, nu2: f64) -> (traction_contact::Body, traction_contact::Body) {
+        (
+            traction_contact::Body::new(0.033, 0.0226, 2.07e11, 0.3),
+            traction_contact::Body::new(0.0714, f64::INFINITY, e2, nu2),
+        )
+    }
+
+    /// An instance with the given parameters set before initialization, the
+    /// operating point of the tests (U ≈ 19.5 m/s, slip, side slip, spin),
+    /// initialized; returns it with all Real outputs.
+    fn run(
+        reals: &[(u32, f64)],
+        ints: &[(u32, i32)],
+        bools: &[(u32, bool)],
+    ) -> Result<(TractionFmu, Vec<f64>), FmuError> {
+        let mut f = TractionFmu::instantiate("t", &crate::model_description::guid()).unwrap();
+        for &(r, x) in reals {
+            f.set_real(&[r], &[x])?;
+        }
+        for &(r, x) in ints {
+            f.set_integer(&[r], &[x])?;
+        }
+        for &(r, x) in bools {
+            f.set_boolean(&[r], &[x])?;
+        }
+        f.set_real(
+            &[vr::OMEGA1, vr::OMEGA2, vr::SIDE_SLIP_VELOCITY, vr::SPIN],
+            &[600.0, 270.0, 0.05, 20.0],
+        )?;
+        f.enter_initialization_mode()?;
+        f.exit_initialization_mode(&mut NullLogger)?;
+        let all: Vec<u32> = (vr::FX..=vr::MU_FORCE).chain(vr::J1..=vr::J7).collect();
+        let mut o = vec![0.0; all.len()];
+        f.get_real(&all, &mut o, &mut NullLogger)?;
+        Ok((f, o))
+    }
+
+    /// traction-contact evaluated directly at the FMU's operating point
+    /// (U, dU, dV, omega read back from the FMU's outputs).
+    fn direct(c: &traction_contact::TractionContact, o: &[f64]) -> traction_contact::Evaluation {
+        let i = |r: u32| o[out_index(r).unwrap()];
+        let state = traction_contact::OperatingState::new(
+            500.0,
+            i(vr::U),
+            i(vr::DU),
+            i(vr::DV),
+            i(vr::OMEGA),
+            40.0,
+        )
+        .unwrap();
+        c.evaluate(&state).unwrap()
+    }
+
+    /// FMU outputs against a traction-contact evaluation: forces, moment,
+    /// J1..J7, m, mu and mu_f to 1e-12 relative (the FMU adds no arithmetic
+    /// to these beyond copying; the bound leaves room for nothing else).
+    fn assert_matches(o: &[f64], d: &traction_contact::Evaluation) {
+        let i = |r: u32| o[out_index(r).unwrap()];
+        let pairs = [
+            ("fx", i(vr::FX), d.fx),
+            ("fy", i(vr::FY), d.fy),
+            ("mz", i(vr::MZ), d.mz),
+            ("m", i(vr::M_USED), d.m_used),
+            ("mu", i(vr::MU_USED), d.mu_used),
+            ("mu_force", i(vr::MU_FORCE), d.mu_force),
+            ("J1", i(vr::J1), d.j1),
+            ("J2", i(vr::J1 + 1), d.j2),
+            ("J3", i(vr::J1 + 2), d.j3),
+            ("J4", i(vr::J1 + 3), d.j4),
+            ("J5", i(vr::J1 + 4), d.j5),
+            ("J6", i(vr::J1 + 5), d.j6),
+            ("J7", i(vr::J7), d.j7),
+        ];
+        for (name, fmu, contact) in pairs {
+            assert!(
+                (fmu - contact).abs() <= 1e-12 * contact.abs(),
+                "{name}: FMU {fmu} vs traction-contact {contact}"
+            );
+        }
+    }
+
+    fn user_fluid() -> traction_contact::Fluid {
+        traction_contact::Fluid::constant(35.0, 0.075).unwrap()
+    }
+
+    fn options(model: traction_contact::Model) -> traction_contact::Options {
+        traction_contact::Options {
+            model,
+            rolling_speed_floor: 0.01,
+            ..traction_contact::Options::default()
+        }
+    }
+
+    #[test]
+    fn viscoelastic_equals_traction_contact_and_infinite_deborah_is_elastic_plastic() {
+        let (d, z0) = (0.5, 0.3);
+        let (_, visco) = run(&[(vr::DEBORAH, d), (vr::Z0, z0)], &[(vr::RHEOLOGY, 3)], &[]).unwrap();
+        let (b1, b2) = default_bodies(2.07e11, 0.3);
+        let model = traction_contact::Model::Viscoelastic { deborah: d, z0 };
+        let c =
+            traction_contact::TractionContact::new(&b1, &b2, user_fluid(), options(model)).unwrap();
+        assert_matches(&visco, &direct(&c, &visco));
+        // D = inf through fmi2SetReal: the elastic/plastic model.
+        let (_, inf) = run(
+            &[(vr::DEBORAH, f64::INFINITY), (vr::Z0, z0)],
+            &[(vr::RHEOLOGY, 3)],
+            &[],
+        )
+        .unwrap();
+        let (_, ep) = run(&[], &[(vr::RHEOLOGY, 1)], &[]).unwrap();
+        assert_eq!(inf, ep);
+        let c = traction_contact::TractionContact::new(
+            &b1,
+            &b2,
+            user_fluid(),
+            options(traction_contact::Model::ElasticPlastic),
+        )
+        .unwrap();
+        assert_matches(&ep, &direct(&c, &ep));
+        // A finite D relaxes the stress: less traction than elastic/plastic.
+        let fx = out_index(vr::FX).unwrap();
+        assert!(visco[fx] < ep[fx] * 0.99, "{} vs {}", visco[fx], ep[fx]);
+        // Bad D or Z0: fmi2Error at initialization naming the parameter.
+        for (r, x, name) in [
+            (vr::DEBORAH, -1.0, "deborah"),
+            (vr::DEBORAH, 0.0, "deborah"),
+            (vr::DEBORAH, f64::NEG_INFINITY, "deborah"),
+            (vr::Z0, -0.3, "z0"),
+        ] {
+            let e = run(&[(r, x)], &[(vr::RHEOLOGY, 3)], &[]).unwrap_err();
+            assert_eq!(e.status, Status::Error);
+            assert!(e.message.contains(name), "{e}");
+        }
+        let mut f = TractionFmu::instantiate("t", &crate::model_description::guid()).unwrap();
+        let e = f.set_real(&[vr::DEBORAH], &[f64::NAN]).unwrap_err();
+        assert!(e.message.contains("deborah"), "{e}");
+    }
+
+    #[test]
+    fn spin_peak_equals_traction_contact() {
+        // User fluid: forces scaled by mu_spin_user, J groups by mu_user.
+        let (_, o) = run(&[(vr::MU_SPIN_USER, 0.06)], &[], &[(vr::SPIN_PEAK, true)]).unwrap();
+        let (b1, b2) = default_bodies(2.07e11, 0.3);
+        let fluid = user_fluid().with_spin_peak(0.06).unwrap();
+        let c = traction_contact::TractionContact::new(
+            &b1,
+            &b2,
+            fluid,
+            options(traction_contact::Model::ElasticPlastic),
+        )
+        .unwrap();
+        assert_matches(&o, &direct(&c, &o));
+        assert_eq!(o[out_index(vr::MU_FORCE).unwrap()], 0.06);
+        assert_eq!(o[out_index(vr::MU_USED).unwrap()], 0.075);
+        // Off (default): mu_spin_user is ignored and mu_f = mu.
+        let (_, off) = run(&[(vr::MU_SPIN_USER, 0.06)], &[], &[]).unwrap();
+        assert_eq!(off[out_index(vr::MU_FORCE).unwrap()], 0.075);
+        // TDF-88: its spin-peak correlation.
+        let (_, o) = run(&[], &[(vr::FLUID, 2)], &[(vr::SPIN_PEAK, true)]).unwrap();
+        let fluid = traction_contact::Fluid::tdf_88(traction_contact::EnvelopeRule::Clamp)
+            .unwrap()
+            .use_spin_peak(true);
+        let c = traction_contact::TractionContact::new(
+            &b1,
+            &b2,
+            fluid,
+            options(traction_contact::Model::ElasticPlastic),
+        )
+        .unwrap();
+        let d = direct(&c, &o);
+        assert_matches(&o, &d);
+        assert!(d.mu_force != d.mu_used, "the correlation is used");
+        // Out of range: error naming the parameter.
+        let e = run(&[(vr::MU_SPIN_USER, 1.5)], &[], &[(vr::SPIN_PEAK, true)]).unwrap_err();
+        assert!(e.message.contains("mu_spin_user"), "{e}");
+    }
+
+    #[test]
+    fn compliance_uses_both_bodies_materials() {
+        // Steel on a softer body 2 (E 110 GPa, nu 0.34), compliance on.
+        let (e2, nu2) = (1.1e11, 0.34);
+        let (_, o) = run(
+            &[(vr::E2, e2), (vr::NU2, nu2)],
+            &[],
+            &[(vr::COMPLIANCE, true)],
+        )
+        .unwrap();
+        // Kalker's combined constants, computed here by hand.
+        let (g1, g2) = (2.07e11 / 2.6, e2 / (2.0 * (1.0 + nu2)));
+        let g = 1.0 / (0.5 * (1.0 / g1 + 1.0 / g2));
+        let nu = 0.5 * g * (0.3 / g1 + nu2 / g2);
+        let material = traction_contact::DiscMaterial {
+            youngs_modulus: 2.0 * g * (1.0 + nu),
+            poisson_ratio: nu,
+        };
+        let (b1, b2) = default_bodies(e2, nu2);
+        let compliant = |material| traction_contact::Options {
+            compliance: traction_contact::Compliance::Discs {
+                material,
+                slope_measured_in: traction_contact::Direction::Side,
+            },
+            ..options(traction_contact::Model::ElasticPlastic)
+        };
+        let c = traction_contact::TractionContact::new(&b1, &b2, user_fluid(), compliant(material))
+            .unwrap();
+        let d = direct(&c, &o);
+        assert_matches(&o, &d);
+        // Not body 1's material alone (the previous assumption).
+        let body1 = traction_contact::DiscMaterial {
+            youngs_modulus: 2.07e11,
+            poisson_ratio: 0.3,
+        };
+        let c1 = traction_contact::TractionContact::new(&b1, &b2, user_fluid(), compliant(body1))
+            .unwrap();
+        let d1 = direct(&c1, &o);
+        assert!((d1.m_used - d.m_used).abs() > 1e-3 * d.m_used);
+        // Symmetric in the two bodies; identical bodies give their own material.
+        let m12 = physics::kalker_combined(2.07e11, 0.3, e2, nu2);
+        let m21 = physics::kalker_combined(e2, nu2, 2.07e11, 0.3);
+        assert!((m12.youngs_modulus / m21.youngs_modulus - 1.0).abs() < 1e-15);
+        assert!((m12.poisson_ratio - m21.poisson_ratio).abs() < 1e-15);
+        assert!((m12.youngs_modulus / material.youngs_modulus - 1.0).abs() < 1e-14);
+        assert_eq!(physics::kalker_combined(2.07e11, 0.3, 2.07e11, 0.3), body1);
     }
 }

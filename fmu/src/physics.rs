@@ -15,9 +15,17 @@
 //!   concave;
 //! * a normal load `N ≤ 0` means the bodies separate: every force, size and J
 //!   group is 0 and the regime is [`Regime::Open`];
-//! * with the compliance correction on, the discs are both of body 1's
-//!   material and the user's slope `m` is taken as measured in side slip (as
-//!   the report measured it, Table 4-3);
+//! * with the compliance correction on, the user's slope `m` is taken as
+//!   measured in side slip (as the report measured it, Table 4-3). The disc
+//!   compliance of traction-contact (`Compliance::Discs`) takes *one* disc
+//!   material (it assumes both discs alike); the FMU passes the material of
+//!   Kalker's combined elastic constants of the two bodies ([`kalker_combined`]):
+//!   `1/G = (1/G1 + 1/G2)/2`, `ν/G = (ν1/G1 + ν2/G2)/2`, `E = 2G(1 + ν)`,
+//!   with `G_i = E_i/(2(1 + ν_i))`. For identical bodies this is the body
+//!   material itself; for dissimilar ones it is the quasi-identical
+//!   approximation of Kalker's linear theory (the coupling between normal
+//!   and tangential tractions through the difference of the bodies'
+//!   `(1 − 2ν)/G` is neglected, as the report's Kalker coefficients neglect it);
 //! * the rolling-speed floor `U_reg` of traction-contact keeps the forces
 //!   finite and continuous through U = 0 and zero at zero relative motion:
 //!   the J groups use `max(|U|, U_reg)`, and the forward and reversed rolling
@@ -26,8 +34,16 @@
 //!   clamp, so that start-up through U = 0 stays evaluable); the FMU logs a
 //!   warning the first time a state lies outside the data.
 //!
-//! The viscoelastic model needs a Deborah number and a reference stress that
-//! the FMU does not expose yet: it is refused with an error naming the option.
+//! * the viscoelastic model takes the Deborah number `D = ηU/(Ḡa)` and the
+//!   sinh reference stress `Z0 = τ0/τ̄` as parameters (`deborah`, `z0`, each
+//!   `> 0`, `+∞` allowed): traction-contact takes `D` itself (its
+//!   `Options::model`), not the viscosity, so `D` is a constant of the
+//!   simulation and does not follow `U` or `a`. `D = ∞` is the
+//!   elastic/plastic model exactly, `Z0 = ∞` the linear Maxwell fluid;
+//! * with `use_spin_peak` the forces are scaled by the spin-peak traction
+//!   coefficient `μ_s` (traction-contact's `Fluid::with_spin_peak` for the
+//!   user fluid, `Fluid::use_spin_peak` for the report fluids' correlation)
+//!   while the J groups keep the zero-spin `μ`.
 
 use traction_contact::{
     Body, Compliance, ContactError, Direction, DiscMaterial, EnvelopeRule, Model, OperatingState,
@@ -63,7 +79,8 @@ pub enum Rheology {
     ElasticPlastic,
     /// Rigid/plastic.
     RigidPlastic,
-    /// Viscoelastic (not exposed by the FMU yet).
+    /// Viscoelastic sinh law with the limit as a cap (parameters
+    /// [`Parameters::deborah`], [`Parameters::z0`]).
     Viscoelastic,
 }
 
@@ -109,6 +126,17 @@ pub struct Parameters {
     pub mu_user: f64,
     /// Rheological model.
     pub rheology: Rheology,
+    /// Deborah number D = ηU/(Ḡa) of the viscoelastic model (dimensionless,
+    /// > 0, `+∞` = elastic/plastic); a constant of the simulation.
+    pub deborah: f64,
+    /// Sinh reference stress Z0 = τ0/τ̄ of the viscoelastic model
+    /// (dimensionless, > 0, `+∞` = linear Maxwell fluid).
+    pub z0: f64,
+    /// Scale the forces by the spin-peak traction coefficient μ_s.
+    pub spin_peak: bool,
+    /// Spin-peak traction coefficient μ_s (dimensionless), used when `fluid`
+    /// is `User` and `spin_peak` is set.
+    pub mu_spin_user: f64,
     /// Disc-compliance correction of the slope (Appendix IV A, B).
     pub compliance: bool,
     /// Rolling-speed regularisation U_reg, m/s (in [1e-9, 1]).
@@ -151,8 +179,11 @@ pub struct Outputs {
     pub p0: f64,
     /// Slope m used (dimensionless).
     pub m: f64,
-    /// Peak traction coefficient μ used (dimensionless).
+    /// Zero-spin peak traction coefficient μ used in the J groups (dimensionless).
     pub mu: f64,
+    /// Traction coefficient μ_f that scales the forces: μ, or μ_s with the
+    /// spin peak (dimensionless).
+    pub mu_force: f64,
     /// J1..J7 (dimensionless), `j[0]` is J1.
     pub j: [f64; 7],
     /// Regime.
@@ -213,6 +244,38 @@ fn radius(name: &'static str, r: f64) -> Result<f64, PhysicsError> {
     })
 }
 
+/// Kalker's combined elastic constants of two bodies, as one disc material:
+/// `1/G = (1/G1 + 1/G2)/2`, `ν/G = (ν1/G1 + ν2/G2)/2`, `E = 2G(1 + ν)`,
+/// `G_i = E_i/(2(1 + ν_i))`. Identical bodies give their own material.
+pub fn kalker_combined(e1: f64, nu1: f64, e2: f64, nu2: f64) -> DiscMaterial {
+    let (g1, g2) = (e1 / (2.0 * (1.0 + nu1)), e2 / (2.0 * (1.0 + nu2)));
+    if g1 == g2 && nu1 == nu2 {
+        return DiscMaterial {
+            youngs_modulus: e1,
+            poisson_ratio: nu1,
+        };
+    }
+    let g = 2.0 / (1.0 / g1 + 1.0 / g2);
+    let nu = 0.5 * g * (nu1 / g1 + nu2 / g2);
+    DiscMaterial {
+        youngs_modulus: 2.0 * g * (1.0 + nu),
+        poisson_ratio: nu,
+    }
+}
+
+/// A parameter that must be > 0 and may be `+∞` (NaN refused).
+fn positive_or_inf(
+    name: &'static str,
+    value: f64,
+    valid: &'static str,
+) -> Result<(), PhysicsError> {
+    if value > 0.0 {
+        Ok(())
+    } else {
+        Err(PhysicsError::Invalid { name, value, valid })
+    }
+}
+
 /// The contact, built once from its parameters.
 #[derive(Debug, Clone)]
 pub struct Contact {
@@ -253,26 +316,47 @@ impl Contact {
                     p.mu_user > 0.0 && p.mu_user < 1.0,
                     "peak traction coefficient in (0, 1)",
                 )?;
-                traction_contact::Fluid::constant(p.m_user, p.mu_user)?
+                let f = traction_contact::Fluid::constant(p.m_user, p.mu_user)?;
+                if p.spin_peak {
+                    check(
+                        "mu_spin_user",
+                        p.mu_spin_user,
+                        p.mu_spin_user > 0.0 && p.mu_spin_user < 1.0,
+                        "spin-peak traction coefficient in (0, 1)",
+                    )?;
+                    f.with_spin_peak(p.mu_spin_user)?
+                } else {
+                    f
+                }
             }
-            Fluid::Santotrac50 => traction_contact::Fluid::santotrac_50(envelope)?,
-            Fluid::Tdf88 => traction_contact::Fluid::tdf_88(envelope)?,
+            Fluid::Santotrac50 => {
+                traction_contact::Fluid::santotrac_50(envelope)?.use_spin_peak(p.spin_peak)
+            }
+            Fluid::Tdf88 => traction_contact::Fluid::tdf_88(envelope)?.use_spin_peak(p.spin_peak),
         };
         let model = match p.rheology {
             Rheology::ElasticPlastic => Model::ElasticPlastic,
             Rheology::RigidPlastic => Model::RigidPlastic,
             Rheology::Viscoelastic => {
-                return Err(PhysicsError::NotYetAvailable(
-                    "rheology_model = viscoelastic (its Deborah number and reference stress are not FMU parameters yet)",
-                ));
+                positive_or_inf(
+                    "deborah",
+                    p.deborah,
+                    "Deborah number D = eta U/(G a), > 0 (inf = elastic/plastic)",
+                )?;
+                positive_or_inf(
+                    "z0",
+                    p.z0,
+                    "sinh reference stress Z0 = tau0/tau_bar, > 0 (inf = linear Maxwell fluid)",
+                )?;
+                Model::Viscoelastic {
+                    deborah: p.deborah,
+                    z0: p.z0,
+                }
             }
         };
         let compliance = if p.compliance {
             Compliance::Discs {
-                material: DiscMaterial {
-                    youngs_modulus: p.e1,
-                    poisson_ratio: p.nu1,
-                },
+                material: kalker_combined(p.e1, p.nu1, p.e2, p.nu2),
                 slope_measured_in: Direction::Side,
             }
         } else {
@@ -321,6 +405,7 @@ impl Contact {
             return Ok(Outputs {
                 m: r.m_used,
                 mu: r.mu_used,
+                mu_force: r.mu_force,
                 regime: Some(Regime::Open),
                 ..Outputs::default()
             });
@@ -340,6 +425,7 @@ impl Contact {
             p0: r.p0,
             m: r.m_used,
             mu: r.mu_used,
+            mu_force: r.mu_force,
             j: [r.j1, r.j2, r.j3, r.j4, r.j5, r.j6, r.j7],
             regime: Some(regime),
             outside_envelope: r.outside_envelope.any(),
@@ -394,6 +480,10 @@ mod tests {
             m_user: 35.0,
             mu_user: 0.075,
             rheology: Rheology::ElasticPlastic,
+            deborah: 1.0,
+            z0: 1.0,
+            spin_peak: false,
+            mu_spin_user: 0.075,
             compliance: false,
             u_reg: 0.01,
         }
@@ -594,14 +684,29 @@ mod tests {
         };
         let e = Contact::new(&conform).unwrap_err().to_string();
         assert!(e.contains("curvature"), "{e}");
-        let visco = Parameters {
-            rheology: Rheology::Viscoelastic,
+        for (deborah, z0, name) in [
+            (-1.0, 1.0, "deborah"),
+            (0.0, 1.0, "deborah"),
+            (f64::NAN, 1.0, "deborah"),
+            (1.0, -2.0, "z0"),
+            (1.0, f64::NAN, "z0"),
+        ] {
+            let visco = Parameters {
+                rheology: Rheology::Viscoelastic,
+                deborah,
+                z0,
+                ..steel_twin_disc()
+            };
+            let e = Contact::new(&visco).unwrap_err().to_string();
+            assert!(e.starts_with(name), "{e}");
+        }
+        let bad_spin_peak = Parameters {
+            spin_peak: true,
+            mu_spin_user: -0.1,
             ..steel_twin_disc()
         };
-        assert!(matches!(
-            Contact::new(&visco),
-            Err(PhysicsError::NotYetAvailable(_))
-        ));
+        let e = Contact::new(&bad_spin_peak).unwrap_err().to_string();
+        assert!(e.contains("mu_spin_user"), "{e}");
         let e = c
             .evaluate(&op(600.0, 2e6, 1.0, 0.0))
             .unwrap_err()

@@ -195,7 +195,7 @@ pub const ENUM_TYPES: &[EnumType] = &[
             (
                 "viscoelastic",
                 3,
-                "viscoelastic (not available through the FMU yet)",
+                "viscoelastic sinh law with the limit as a cap (parameters deborah, z0)",
             ),
         ],
     ),
@@ -373,6 +373,9 @@ pub mod vr {
     pub const TILT_ANGLE: u32 = 13;
     pub const TILT_OFFSET: u32 = 14;
     pub const U_REG: u32 = 15;
+    pub const DEBORAH: u32 = 16;
+    pub const Z0: u32 = 17;
+    pub const MU_SPIN_USER: u32 = 18;
     // Real inputs 100..
     pub const LOAD: u32 = 100;
     pub const OMEGA1: u32 = 101;
@@ -400,6 +403,7 @@ pub mod vr {
     pub const OMEGA: u32 = 215;
     pub const M_USED: u32 = 216;
     pub const MU_USED: u32 = 217;
+    pub const MU_FORCE: u32 = 218;
     pub const J1: u32 = 221; // J1..J7 = 221..227
     pub const J7: u32 = 227;
     // Enumerations and Booleans 300..
@@ -409,15 +413,16 @@ pub mod vr {
     pub const SIDE_SLIP_SOURCE: u32 = 303;
     pub const COMPLIANCE: u32 = 304;
     pub const ENVELOPE: u32 = 305;
+    pub const SPIN_PEAK: u32 = 306;
     pub const REGIME: u32 = 310;
 }
 
 /// Number of Real parameters (VR 1..=N_REAL_PARAMS).
-pub const N_REAL_PARAMS: usize = 15;
+pub const N_REAL_PARAMS: usize = 18;
 /// Number of Real inputs (VR 100..).
 pub const N_INPUTS: usize = 7;
-/// Number of Real outputs (VR 200..=217 and 221..=227).
-pub const N_REAL_OUTPUTS: usize = 25;
+/// Number of Real outputs (VR 200..=218 and 221..=227).
+pub const N_REAL_OUTPUTS: usize = 26;
 
 /// The table, in the order of ModelVariables (indices are 1-based there).
 pub const VARIABLES: &[Variable] = &[
@@ -539,6 +544,29 @@ pub const VARIABLES: &[Variable] = &[
         1e-9,
         1e3,
         "U_reg: the J groups use max(|U|, U_reg) so that forces stay finite and continuous through zero rolling speed, m/s",
+    ),
+    par(
+        "deborah",
+        vr::DEBORAH,
+        "Dimensionless",
+        1.0,
+        "Deborah number D = eta U/(G a) of the viscoelastic model (rheology_model = viscoelastic, report App. V eqs. 3-6); valid range D > 0, inf allowed (= the elastic/plastic model); a constant: it does not follow U or a during the simulation",
+    ),
+    par(
+        "z0",
+        vr::Z0,
+        "Dimensionless",
+        1.0,
+        "Sinh reference stress Z0 = tau0/tau_bar of the viscoelastic model (rheology_model = viscoelastic, report App. V eq. 3), tau_bar = mu N/(pi a b); valid range Z0 > 0, inf allowed (= the linear Maxwell fluid)",
+    ),
+    par_bounded(
+        "mu_spin_user",
+        vr::MU_SPIN_USER,
+        "Dimensionless",
+        0.075,
+        1e-6,
+        0.999,
+        "Spin-peak traction coefficient mu_s, used when fluid = user and use_spin_peak = true: forces = mu_s N J, the J groups keep mu_user (report App. VI, J5*MS); valid range (0, 1)",
     ),
     input(
         "normal_load",
@@ -713,7 +741,14 @@ pub const VARIABLES: &[Variable] = &[
         vr::MU_USED,
         "Dimensionless",
         Depends::AllInputs,
-        "Peak traction coefficient mu used",
+        "Zero-spin peak traction coefficient mu used in the J groups",
+    ),
+    output(
+        "mu_force",
+        vr::MU_FORCE,
+        "Dimensionless",
+        Depends::AllInputs,
+        "Traction coefficient mu_f that scales the forces: mu, or the spin-peak mu_s when use_spin_peak = true (J4 = fx/(mu_f N))",
     ),
     output(
         "J1",
@@ -741,21 +776,21 @@ pub const VARIABLES: &[Variable] = &[
         vr::J1 + 3,
         "Dimensionless",
         Depends::AllInputs,
-        "J4, dimensionless traction along x, fx/(mu N)",
+        "J4, dimensionless traction along x, fx/(mu_f N)",
     ),
     output(
         "J5",
         vr::J1 + 4,
         "Dimensionless",
         Depends::AllInputs,
-        "J5, dimensionless traction across, fy/(mu N)",
+        "J5, dimensionless traction across, fy/(mu_f N)",
     ),
     output(
         "J6",
         vr::J1 + 5,
         "Dimensionless",
         Depends::AllInputs,
-        "J6, dimensionless spin moment mz/(mu N sqrt(ab))",
+        "J6, dimensionless spin moment mz/(mu_f N sqrt(ab))",
     ),
     output(
         "J7",
@@ -797,7 +832,7 @@ pub const VARIABLES: &[Variable] = &[
             declared: "RheologyModel",
             start: Some(1),
         },
-        description: "Rheological model: 1 elastic/plastic, 2 rigid/plastic, 3 viscoelastic",
+        description: "Rheological model: 1 elastic/plastic, 2 rigid/plastic, 3 viscoelastic (deborah, z0)",
         depends: Depends::None,
     },
     Variable {
@@ -830,7 +865,16 @@ pub const VARIABLES: &[Variable] = &[
         causality: Causality::Parameter,
         variability: Variability::Fixed,
         kind: Kind::Boolean { start: Some(false) },
-        description: "Correct the traction slope for disc compliance (report Appendix IV A, B)",
+        description: "Correct the traction slope for disc compliance (report Appendix IV A, B); both discs elastic with Kalker's combined constants of body 1 and body 2 (1/G = (1/G1 + 1/G2)/2, nu/G = (nu1/G1 + nu2/G2)/2); m is taken as measured in side slip",
+        depends: Depends::None,
+    },
+    Variable {
+        name: "use_spin_peak",
+        vr: vr::SPIN_PEAK,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        kind: Kind::Boolean { start: Some(false) },
+        description: "Scale the forces by the spin-peak traction coefficient mu_s instead of mu (the J groups keep mu): fluid = user: mu_spin_user; report fluids: their spin-peak correlation mu_s(P0, U, inlet temperature, k, |Z|) (Appendix III-E, III-F)",
         depends: Depends::None,
     },
     Variable {

@@ -119,6 +119,10 @@ fn default_parameters() -> traction_fmu::physics::Parameters {
         m_user: s("m_user"),
         mu_user: s("mu_user"),
         rheology: traction_fmu::physics::Rheology::ElasticPlastic,
+        deborah: s("deborah"),
+        z0: s("z0"),
+        spin_peak: false,
+        mu_spin_user: s("mu_spin_user"),
         compliance: false,
         u_reg: s("rolling_speed_regularisation"),
     }

@@ -157,6 +157,9 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
         (vr::MU_USER, 0.2),
         (vr::TILT_ANGLE, 0.5),
         (vr::U_REG, 0.1),
+        (vr::DEBORAH, 2.0),
+        (vr::Z0, 1.0),
+        (vr::MU_SPIN_USER, 0.2),
     ];
     let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
     let mut s = S::Instantiated;
