@@ -185,10 +185,16 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
                     fmi2SetReal(c, &r, 1, &x)
                 }
                 (S::Instantiated, 30..=39) | (S::Init, 20..=29) => {
-                    let r = [vr::SPIN_SOURCE, vr::SIDE_SLIP_SOURCE, vr::RHEOLOGY]
-                        [rng.below(3) as usize];
-                    let x = rng.below(4) as i32;
-                    fmi2SetInteger(c, &r, 1, &x)
+                    if rng.below(4) == 0 {
+                        // Spin peak (mu_spin_user) on or off.
+                        let x = rng.below(2) as Fmi2Boolean;
+                        fmi2SetBoolean(c, &vr::SPIN_PEAK, 1, &x)
+                    } else {
+                        let r = [vr::SPIN_SOURCE, vr::SIDE_SLIP_SOURCE, vr::RHEOLOGY]
+                            [rng.below(3) as usize];
+                        let x = rng.below(4) as i32;
+                        fmi2SetInteger(c, &r, 1, &x)
+                    }
                 }
                 (S::Instantiated, 40..=79) => fmi2EnterInitializationMode(c),
                 (S::Init, 30..=89) => fmi2ExitInitializationMode(c),
