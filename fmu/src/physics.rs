@@ -25,7 +25,8 @@
 //!   material itself; for dissimilar ones it is the quasi-identical
 //!   approximation of Kalker's linear theory (the coupling between normal
 //!   and tangential tractions through the difference of the bodies'
-//!   `(1 − 2ν)/G` is neglected, as the report's Kalker coefficients neglect it);
+//!   `(1 − 2ν)/G` is neglected; it vanishes for identical bodies, the case of
+//!   the report's Kalker coefficients);
 //! * the rolling-speed floor `U_reg` of traction-contact keeps the forces
 //!   finite and continuous through U = 0 and zero at zero relative motion:
 //!   the J groups use `max(|U|, U_reg)`, and the forward and reversed rolling
@@ -355,8 +356,15 @@ impl Contact {
             }
         };
         let compliance = if p.compliance {
+            let material = kalker_combined(p.e1, p.nu1, p.e2, p.nu2);
+            check(
+                "nu1, nu2 (compliance_correction: Kalker's combined Poisson's ratio of the two bodies)",
+                material.poisson_ratio,
+                (0.0..=0.5).contains(&material.poisson_ratio),
+                "in [0, 0.5] (Kalker's table)",
+            )?;
             Compliance::Discs {
-                material: kalker_combined(p.e1, p.nu1, p.e2, p.nu2),
+                material,
                 slope_measured_in: Direction::Side,
             }
         } else {
@@ -707,6 +715,14 @@ mod tests {
         };
         let e = Contact::new(&bad_spin_peak).unwrap_err().to_string();
         assert!(e.contains("mu_spin_user"), "{e}");
+        let auxetic = Parameters {
+            compliance: true,
+            nu1: -0.5,
+            nu2: -0.2,
+            ..steel_twin_disc()
+        };
+        let e = Contact::new(&auxetic).unwrap_err().to_string();
+        assert!(e.starts_with("nu1, nu2"), "{e}");
         let e = c
             .evaluate(&op(600.0, 2e6, 1.0, 0.0))
             .unwrap_err()
