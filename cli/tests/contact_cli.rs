@@ -4,7 +4,7 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::traction;
+use common::{fails, ok, traction};
 
 use traction_contact::{Body, EnvelopeRule, Fluid, OperatingState, Options, TractionContact};
 
@@ -12,27 +12,6 @@ const OUT: [&str; 18] = [
     "fx", "fy", "mz", "loss", "a", "b", "k", "p0", "m_used", "mu_used", "J1", "J2", "J3", "J4",
     "J5", "J6", "J7", "regime",
 ];
-
-fn ok(args: &[&str], stdin: &str) -> Vec<Vec<String>> {
-    let out = traction(args, stdin);
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout)
-        .unwrap()
-        .lines()
-        .map(|l| l.split(',').map(str::to_string).collect())
-        .collect()
-}
-
-fn fails(args: &[&str], stdin: &str) -> String {
-    let out = traction(args, stdin);
-    assert!(!out.status.success());
-    assert!(out.stdout.is_empty(), "partial output written");
-    String::from_utf8(out.stderr).unwrap()
-}
 
 const HEADER: &str = "rx1,ry1,rx2,ry2,e1,nu1,e2,nu2,load,u,du,dv,omega,theta";
 /// High-speed machine, k = 5 discs (Table 2-1), trace 79072704 class state.

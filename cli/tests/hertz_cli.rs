@@ -4,36 +4,13 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::traction;
+use common::{fails, ok, traction};
 
 use traction_hertz::{Body, Geometry};
 
 const OUT_COLUMNS: [&str; 10] = [
     "a", "b", "k", "p0", "load", "re", "e_prime", "shape_a", "shape_b", "c",
 ];
-
-/// Run on stdin, expect success, return the output lines split into cells.
-fn ok(args: &[&str], stdin: &str) -> Vec<Vec<String>> {
-    let out = traction(args, stdin);
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout)
-        .unwrap()
-        .lines()
-        .map(|l| l.split(',').map(str::to_string).collect())
-        .collect()
-}
-
-/// Run on stdin, expect failure with nothing on stdout; return stderr.
-fn fails(args: &[&str], stdin: &str) -> String {
-    let out = traction(args, stdin);
-    assert!(!out.status.success());
-    assert!(out.stdout.is_empty(), "partial output written");
-    String::from_utf8(out.stderr).unwrap()
-}
 
 const HEADER: &str = "rx1,ry1,rx2,ry2,e1,nu1,e2,nu2";
 const STEEL_BALL_ON_FLAT: &str = "0.01,0.01,inf,inf,210e9,0.3,210e9,0.3";

@@ -37,3 +37,26 @@ pub fn run(args: &[&str], stdin: &str) -> (bool, String, String) {
         String::from_utf8(out.stderr).expect("stderr is UTF-8"),
     )
 }
+
+/// Run on stdin, expect success, return the output lines split into cells.
+pub fn ok(args: &[&str], stdin: &str) -> Vec<Vec<String>> {
+    let out = traction(args, stdin);
+    assert!(
+        out.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout)
+        .expect("stdout is UTF-8")
+        .lines()
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect()
+}
+
+/// Run on stdin, expect failure with nothing on stdout; return stderr.
+pub fn fails(args: &[&str], stdin: &str) -> String {
+    let out = traction(args, stdin);
+    assert!(!out.status.success());
+    assert!(out.stdout.is_empty(), "partial output written");
+    String::from_utf8(out.stderr).expect("stderr is UTF-8")
+}
