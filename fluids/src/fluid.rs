@@ -377,14 +377,7 @@ impl Fluid {
         theta_celsius: f64,
         k: f64,
     ) -> Result<f64, FluidError> {
-        let q = Query {
-            p0_pa,
-            speed_m_s,
-            theta_celsius,
-            k,
-            z: 0.0,
-        };
-        Ok(self.slope.evaluate(&q, Policy::Strict)?.value)
+        self.strict(Quantity::Slope, p0_pa, speed_m_s, theta_celsius, k, 0.0)
     }
 
     /// Peak traction coefficient μ without spin; strict envelope.
@@ -395,14 +388,7 @@ impl Fluid {
         theta_celsius: f64,
         k: f64,
     ) -> Result<f64, FluidError> {
-        let q = Query {
-            p0_pa,
-            speed_m_s,
-            theta_celsius,
-            k,
-            z: 0.0,
-        };
-        Ok(self.mu.evaluate(&q, Policy::Strict)?.value)
+        self.strict(Quantity::Mu, p0_pa, speed_m_s, theta_celsius, k, 0.0)
     }
 
     /// Peak traction coefficient μ with spin parameter Z = ω√(ab)/U; strict envelope.
@@ -414,14 +400,27 @@ impl Fluid {
         k: f64,
         z: f64,
     ) -> Result<f64, FluidError> {
-        let q = Query {
+        self.strict(Quantity::SpinMu, p0_pa, speed_m_s, theta_celsius, k, z)
+    }
+
+    /// [`Fluid::evaluate`] with the strict envelope, value only.
+    fn strict(
+        &self,
+        q: Quantity,
+        p0_pa: f64,
+        speed_m_s: f64,
+        theta_celsius: f64,
+        k: f64,
+        z: f64,
+    ) -> Result<f64, FluidError> {
+        let query = Query {
             p0_pa,
             speed_m_s,
             theta_celsius,
             k,
             z,
         };
-        Ok(self.spin_mu.evaluate(&q, Policy::Strict)?.value)
+        Ok(self.evaluate(q, &query, Policy::Strict)?.value)
     }
 }
 

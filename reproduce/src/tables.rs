@@ -45,6 +45,37 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
 }
 
+/// The three series of a theory-vs-report figure: the computed line (black),
+/// the report's printed theory (crosses) and the measured points (circles).
+fn theory_printed_measured(
+    computed: &str,
+    line: Vec<(f64, f64)>,
+    printed_label: &str,
+    printed: Vec<(f64, f64)>,
+    measured: Vec<(f64, f64)>,
+) -> Vec<Series> {
+    vec![
+        Series {
+            name: computed.into(),
+            style: Style::Line,
+            color: 0,
+            points: line,
+        },
+        Series {
+            name: printed_label.into(),
+            style: Style::Crosses,
+            color: 2,
+            points: printed,
+        },
+        Series {
+            name: "measured".into(),
+            style: Style::Circles,
+            color: 1,
+            points: measured,
+        },
+    ]
+}
+
 /// A figure in the style of the report's.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
@@ -1024,26 +1055,13 @@ pub fn appendix_vi() -> Result<Reproduced, ReproduceError> {
                 ),
                 x_label: "side slip ΔV/U".into(),
                 y_label: "traction coefficient Fy/Fz".into(),
-                series: vec![
-                    Series {
-                        name: "J+T elastic/plastic, J5·μ_spin (computed)".into(),
-                        style: Style::Line,
-                        color: 0,
-                        points: line,
-                    },
-                    Series {
-                        name: "printed theory (App. VI)".into(),
-                        style: Style::Crosses,
-                        color: 2,
-                        points: printed,
-                    },
-                    Series {
-                        name: "measured".into(),
-                        style: Style::Circles,
-                        color: 1,
-                        points: measured,
-                    },
-                ],
+                series: theory_printed_measured(
+                    "J+T elastic/plastic, J5·μ_spin (computed)",
+                    line,
+                    "printed theory (App. VI)",
+                    printed,
+                    measured,
+                ),
             })
         })
         .collect::<Result<Vec<Figure>, ReproduceError>>()?;
@@ -1140,26 +1158,13 @@ pub fn appendix_vii_a() -> Result<Reproduced, ReproduceError> {
             ),
             x_label: "side slip ΔV/U".into(),
             y_label: "traction coefficient Fy/N".into(),
-            series: vec![
-                Series {
-                    name: "eq. 8 / J+T elastic/plastic (computed)".into(),
-                    style: Style::Line,
-                    color: 0,
-                    points: line,
-                },
-                Series {
-                    name: "printed theory (App. VII-A)".into(),
-                    style: Style::Crosses,
-                    color: 2,
-                    points: printed,
-                },
-                Series {
-                    name: "measured".into(),
-                    style: Style::Circles,
-                    color: 1,
-                    points: measured,
-                },
-            ],
+            series: theory_printed_measured(
+                "eq. 8 / J+T elastic/plastic (computed)",
+                line,
+                "printed theory (App. VII-A)",
+                printed,
+                measured,
+            ),
         });
     }
     Ok(Reproduced {
