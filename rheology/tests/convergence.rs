@@ -110,3 +110,56 @@ fn accuracy_parameter_is_met() {
         }
     }
 }
+
+#[test]
+fn accuracy_parameter_is_met_on_random_cases() {
+    // 60 pseudo-random cases (fixed seed) over k ∈ [0.05, 20], |J1| ∈
+    // [0.1, 32], |J2| ∈ [0.03, 3], |J3| ∈ [0.3, 100], all sign combinations,
+    // plus the case that exposed the missing step control near the strips'
+    // crossing of vy = 0 (errors up to 0.2 per strip, 1.2·tol in total).
+    // The reference (128 panels of 8 points, h = 0.004) is checked against
+    // a coarser one (64 panels, h = 0.008): their difference bounds its own
+    // error and must be < 1e-5, so that error ≤ tol is meaningful at 1e-4.
+    let mut cases = vec![(0.151, 0.358, 0.648, -43.226)];
+    let mut s: u64 = 0x5eed_1234;
+    let mut rnd = || {
+        s = s
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((s >> 11) as f64) / ((1u64 << 53) as f64)
+    };
+    for _ in 0..60 {
+        let k = 10f64.powf(rnd() * 2.6 - 1.3);
+        let mut signed = |lo: f64, span: f64| {
+            let m = 10f64.powf(rnd() * span + lo);
+            if rnd() < 0.5 { -m } else { m }
+        };
+        let j1 = signed(-1.0, 2.5);
+        let j2 = signed(-1.5, 2.0);
+        let j3 = signed(-0.5, 2.5);
+        cases.push((k, j1, j2, j3));
+    }
+    let mut worst: f64 = 0.0;
+    for &(k, j1, j2, j3) in &cases {
+        let i = Inputs::new(k, j1, j2, j3).unwrap();
+        let r = run(&i, 128, 0.004);
+        let r2 = run(&i, 64, 0.008);
+        assert!(
+            err(&r, &r2) < 1e-5,
+            "reference not converged: {k} {j1} {j2} {j3}"
+        );
+        for tol in [1e-2, 1e-3, 1e-4] {
+            let o = evaluate(&i, Model::ElasticPlastic, Accuracy::new(tol).unwrap()).unwrap();
+            let e = err(&o, &r);
+            worst = worst.max(e / tol);
+            if e / tol > 0.4 {
+                println!(
+                    "k={k} J=({j1},{j2},{j3}) tol {tol}: error/tol {:.2}",
+                    e / tol
+                );
+            }
+            assert!(e <= tol, "k={k} J=({j1},{j2},{j3}) tol {tol}: error {e}");
+        }
+    }
+    println!("worst error/tol over {} cases: {worst:.2}", cases.len());
+}
