@@ -97,6 +97,15 @@ struct PState {
     acc: StripSums,
 }
 
+/// What [`Strip::integrate_rec`] reports along a strip.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Event {
+    /// Elastic from x0 (stress z0) to x1: Z is the closed form in between.
+    Elastic { x0: f64, z0: (f64, f64), x1: f64 },
+    /// On the limit at x with unit direction n (|Z| = L(x)).
+    Plastic { x: f64, n: (f64, f64) },
+}
+
 enum PlasticEnd {
     Outlet,
     Unload { x: f64, z: (f64, f64) },
@@ -109,7 +118,7 @@ impl Strip {
     }
 
     #[inline]
-    fn z_el(&self, x0: f64, z0: (f64, f64), x: f64) -> (f64, f64) {
+    pub(crate) fn z_el(&self, x0: f64, z0: (f64, f64), x: f64) -> (f64, f64) {
         let e = x - x0;
         (
             z0.0 + self.a * e,
@@ -417,6 +426,7 @@ impl Strip {
     }
 
     /// Plastic flow from yield at X = c·sn (with unit direction n) on.
+    #[allow(clippy::too_many_arguments)]
     fn plastic(
         &self,
         sn: f64,
@@ -425,7 +435,9 @@ impl Strip {
         acc: &mut StripSums,
         allow_unload: bool,
         (s_step, s_step_smooth): (f64, f64),
+        rec: &mut impl FnMut(Event),
     ) -> PlasticEnd {
+        rec(Event::Plastic { x: self.c * sn, n });
         let s0 = sn.atan2(cs);
         let span = FRAC_PI_2 - s0;
         if span <= 0.0 {
@@ -542,6 +554,10 @@ impl Strip {
                     }
                     *acc += best.acc;
                     let l = 1.5 * self.c * best.cs;
+                    rec(Event::Plastic {
+                        x: self.c * best.sn,
+                        n: (best.nx, best.ny),
+                    });
                     return PlasticEnd::Unload {
                         x: self.c * best.sn,
                         z: (l * best.nx, l * best.ny),
@@ -549,6 +565,10 @@ impl Strip {
                 }
             }
             p = q;
+            rec(Event::Plastic {
+                x: self.c * p.sn,
+                n: (p.nx, p.ny),
+            });
             if last {
                 break;
             }
@@ -559,6 +579,17 @@ impl Strip {
 
     /// Integrate the strip from the inlet to the outlet.
     pub(crate) fn integrate(&self, s_step: f64, s_step_smooth: f64) -> StripSums {
+        self.integrate_rec(s_step, s_step_smooth, &mut |_| {})
+    }
+
+    /// [`Strip::integrate`], reporting the elastic segments and the plastic
+    /// states (at every step end) to `rec`, in order from the inlet.
+    pub(crate) fn integrate_rec(
+        &self,
+        s_step: f64,
+        s_step_smooth: f64,
+        rec: &mut impl FnMut(Event),
+    ) -> StripSums {
         let c = self.c;
         let mut acc = StripSums::default();
         if c <= 0.0 {
@@ -570,6 +601,7 @@ impl Strip {
         loop {
             let xy = self.find_yield(x0, z0);
             acc += self.el_sums(x0, z0, xy);
+            rec(Event::Elastic { x0, z0, x1: xy });
             if xy >= c * (1.0 - 1e-15) {
                 break;
             }
@@ -587,6 +619,7 @@ impl Strip {
                 &mut acc,
                 switches < MAX_SWITCH,
                 (s_step, s_step_smooth),
+                rec,
             ) {
                 PlasticEnd::Outlet => break,
                 PlasticEnd::Unload { x, z } => {

@@ -64,6 +64,8 @@
 //! * Other property variations (App. IV eq. 8: G pressure-proportional,
 //!   limit constant): [`elastic_plastic_with`] and [`Properties`], solved by a
 //!   Richardson-extrapolated grid scheme ([`props`], ≈ 1e-4, milliseconds).
+//! * The stress field Z(X, Y) on a grid (plots, flow pattern):
+//!   [`stress_field`].
 //! * Closed forms for zero spin: [`closed::slip_traction`] (eq. 22),
 //!   [`closed::combined_slip_traction`] (eq. 23),
 //!   [`closed::rigid_plastic_slip_traction`] (eq. 24).
@@ -121,12 +123,14 @@
 
 pub mod closed;
 mod ep;
+pub mod field;
 pub mod props;
 mod quad;
 mod rigid;
 mod visco;
 
 pub use ep::Resolution;
+pub use field::{PointState, StressField, stress_field};
 pub use props::{Limit, Modulus, Properties};
 
 /// Smallest supported aspect ratio k.
@@ -161,6 +165,9 @@ pub enum RheologyError {
     /// The requested accuracy is outside [1e-9, 0.1].
     #[error("accuracy tol = {0} is outside the supported range [1e-9, 0.1]")]
     Tolerance(f64),
+    /// A stress-field grid size is outside 1..=4000.
+    #[error("grid size {0} is outside the supported range 1..=4000")]
+    Grid(usize),
 }
 
 /// Inputs in the report's dimensionless groups.
