@@ -39,6 +39,13 @@ const MAX_SUB: usize = 16;
 /// −43.2)); 3 keeps the worst error/tol over 164 cases ≤ 0.7 (1, 2 and 5
 /// were checked: no systematic gain below 3, ≤ 0.7 at all of them).
 const TURN_PER_STEP: f64 = 3.0;
+/// Smallest cos s at which the anisotropic flow term (3/2)·tan s (= −dL/dX)
+/// is evaluated. Near the outlet the shrinking limit drives the stress
+/// direction towards the stiffer axis at a rate ∝ tan s (logarithmically
+/// singular in s); capping it changes the stress only where
+/// cos s < 0.02, whose weight in the strip sums is ∫(3/2)c²cos²s ds
+/// < 4e-6·c², so the effect on J4..J6 is below 1e-5 (isotropic: no effect).
+const CS_MIN: f64 = 0.02;
 /// Largest number of sub-steps per step for the turn of the slip direction.
 const MAX_SUB_TURN: f64 = 256.0;
 /// Largest number of steps of a plastic segment (a guard: the turn limit
@@ -79,13 +86,16 @@ impl std::ops::AddAssign for StripSums {
     }
 }
 
-/// One strip: v(X) = (a, b1 + q2·X), half-width c.
+/// One strip of half-width c: the elastic stress rate G·v/Ḡx =
+/// (a, b1 + q2·X), i.e. the slip velocity v = (a, (b1 + q2·X)/gy) with the
+/// lateral-to-longitudinal stiffness ratio gy = Ḡy/Ḡx (1: isotropic).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Strip {
     pub c: f64,
     pub a: f64,
     pub b1: f64,
     pub q2: f64,
+    pub gy: f64,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -245,24 +255,39 @@ impl Strip {
         hi
     }
 
+    /// Integrands of the strip sums on the limit with direction n.
     #[inline]
-    fn deriv(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> (f64, f64, StripSums) {
+    fn deriv(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> StripSums {
         let x = self.c * sn;
         let dxds = self.c * cs;
         let l = 1.5 * self.c * cs;
-        let vy = self.vy(x);
-        let om = (2.0 / 3.0) * (vy * nx - self.a * ny);
         let zx = l * nx;
         let zy = l * ny;
-        (
-            -om * ny,
-            om * nx,
-            StripSums {
-                ix: zx * dxds,
-                iy: zy * dxds,
-                ixy: zy * x * dxds,
-            },
-        )
+        StripSums {
+            ix: zx * dxds,
+            iy: zy * dxds,
+            ixy: zy * x * dxds,
+        }
+    }
+
+    /// dθ/ds of the direction n on the limit (Prandtl–Reuss with the elastic
+    /// stiffness G = diag(1, gy)): with the elastic rate e = G·v, the plastic
+    /// multiplier λ = (n·e − dL/dX)/(n·G·n) and t ⟂ n,
+    /// dθ/ds = (2/3)(t·e − λ·t·G·n), t·G·n = (gy − 1)·nx·ny; the isotropic
+    /// case is (2/3)(t·e). dL/dX = −(3/2)tan s is capped at cos s ≥
+    /// [`CS_MIN`] (see there).
+    #[inline]
+    pub(crate) fn theta_rate(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
+        let vy = self.vy(self.c * sn);
+        let base = vy * nx - self.a * ny;
+        let r = if self.gy == 1.0 {
+            base
+        } else {
+            let t = 1.5 * sn / cs.max(CS_MIN);
+            base - (self.gy - 1.0) * nx * ny * (self.a * nx + vy * ny + t)
+                / (nx * nx + self.gy * ny * ny)
+        };
+        (2.0 / 3.0) * r
     }
 
     #[inline]
@@ -286,19 +311,36 @@ impl Strip {
         let k = 2.0 / 3.0;
         let av = k * self.a;
         let (vy0, vym, vy1) = (k * self.vy(x0), k * self.vy(xm), k * self.vy(x1));
+        // Anisotropic stiffness: the λ·t·G·n part of `theta_rate` (k·(3/2)·
+        // tan s at the three nodes, capped like there).
+        let (aniso, kg) = (self.gy != 1.0, self.gy - 1.0);
+        let tan = |sn: f64, cs: f64| sn / cs.max(CS_MIN);
+        let (t0, tm, t1) = if aniso {
+            (tan(p.sn, p.cs), tan(sm, cm), tan(s1, c1))
+        } else {
+            (0.0, 0.0, 0.0)
+        };
+        let om = |vy: f64, t: f64, nx: f64, ny: f64| {
+            let base = vy * nx - av * ny;
+            if aniso {
+                base - kg * nx * ny * (av * nx + vy * ny + t) / (nx * nx + self.gy * ny * ny)
+            } else {
+                base
+            }
+        };
         let hh = 0.5 * h;
         // Stage 1 at s0.
         let (n1x, n1y) = (p.nx, p.ny);
-        let om1 = vy0 * n1x - av * n1y;
+        let om1 = om(vy0, t0, n1x, n1y);
         // Stage 2 at the midpoint.
         let (n2x, n2y) = (n1x - hh * om1 * n1y, n1y + hh * om1 * n1x);
-        let om2 = vym * n2x - av * n2y;
+        let om2 = om(vym, tm, n2x, n2y);
         // Stage 3 at the midpoint.
         let (n3x, n3y) = (n1x - hh * om2 * n2y, n1y + hh * om2 * n2x);
-        let om3 = vym * n3x - av * n3y;
+        let om3 = om(vym, tm, n3x, n3y);
         // Stage 4 at s1.
         let (n4x, n4y) = (n1x - h * om3 * n3y, n1y + h * om3 * n3x);
-        let om4 = vy1 * n4x - av * n4y;
+        let om4 = om(vy1, t1, n4x, n4y);
         let h6 = h / 6.0;
         let nx = n1x - h6 * (om1 * n1y + 2.0 * om2 * n2y + 2.0 * om3 * n3y + om4 * n4y);
         let ny = n1y + h6 * (om1 * n1x + 2.0 * om2 * n2x + 2.0 * om3 * n3x + om4 * n4x);
@@ -321,7 +363,8 @@ impl Strip {
     #[inline]
     fn qs_dir(&self, sn: f64, cs: f64) -> (f64, f64) {
         let x = self.c * sn;
-        let (vx, vy) = (self.a, self.vy(x));
+        // The stiff limit follows the slip velocity v = (a, vy/gy).
+        let (vx, vy) = (self.a, self.vy(x) / self.gy);
         let m = vx.hypot(vy);
         if m == 0.0 || !m.is_finite() {
             return if m.is_finite() {
@@ -332,7 +375,7 @@ impl Strip {
         }
         let (ux, uy) = (vx / m, vy / m);
         // α' = dα/ds = vx·(dvy/ds)/|v|², κ = (2/3)|v|.
-        let sd = (-(ux * self.q2 * self.c * cs / m) * 1.5 / m).clamp(-1.0, 1.0);
+        let sd = (-(ux * self.q2 / self.gy * self.c * cs / m) * 1.5 / m).clamp(-1.0, 1.0);
         let cd = (1.0 - sd * sd).sqrt();
         (ux * cd - uy * sd, ux * sd + uy * cd)
     }
@@ -344,13 +387,23 @@ impl Strip {
     fn rates(&self, sn0: f64, cs0: f64, sn1: f64, cs1: f64, h: f64) -> (f64, f64) {
         let (vy0, vy1) = (self.vy(self.c * sn0), self.vy(self.c * sn1));
         let a2 = self.a * self.a;
-        let kh = (2.0 / 3.0) * (a2 + vy0.abs().max(vy1.abs()).powi(2)).sqrt() * h;
+        let mut kh = (2.0 / 3.0) * (a2 + vy0.abs().max(vy1.abs()).powi(2)).sqrt() * h;
+        if self.gy != 1.0 {
+            // The λ·t·G·n part of `theta_rate` relaxes θ too: bound its rate
+            // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s) (tan s largest at s1).
+            let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
+            kh *= 1.0 + f;
+            kh += (2.0 / 3.0) * f * 1.5 * sn1.abs() / cs1.max(CS_MIN) * h;
+        }
+        // The slip direction v = (a, vy/gy) turns at
+        // α' = a·(q2/gy)·c·cos s/(a² + (vy/gy)²).
+        let (vy0, vy1, q2) = (vy0 / self.gy, vy1 / self.gy, self.q2 / self.gy);
         let (vmin, cmax) = if (vy0 < 0.0) != (vy1 < 0.0) {
             (0.0, 1.0)
         } else {
             (vy0.abs().min(vy1.abs()), cs0.max(cs1))
         };
-        let num = (self.a * self.q2 * self.c).abs() * cmax * h;
+        let num = (self.a * q2 * self.c).abs() * cmax * h;
         let den = a2 + vmin * vmin;
         let ah = if num == 0.0 {
             0.0
@@ -408,9 +461,9 @@ impl Strip {
         let nm = self.qs_dir(sm, cm);
         let n1 = self.qs_dir(s1, c1);
         let n0 = (p.nx, p.ny);
-        let (_, _, a0) = self.deriv(p.sn, p.cs, n0.0, n0.1);
-        let (_, _, am) = self.deriv(sm, cm, nm.0, nm.1);
-        let (_, _, a1) = self.deriv(s1, c1, n1.0, n1.1);
+        let a0 = self.deriv(p.sn, p.cs, n0.0, n0.1);
+        let am = self.deriv(sm, cm, nm.0, nm.1);
+        let a1 = self.deriv(s1, c1, n1.0, n1.1);
         let h6 = h / 6.0;
         let mut acc = p.acc;
         acc.ix += h6 * (a0.ix + 4.0 * am.ix + a1.ix);
@@ -633,7 +686,8 @@ impl Strip {
     }
 }
 
-/// Scaled inputs: J1/√k, J2/√k + J3·ΔX/k, J3, J3/k.
+/// Scaled inputs: J1/√k, J2/√k + J3·ΔX/k, J3, J3/k, and the stiffness
+/// ratio gy = Ḡy/Ḡx.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Scaled {
     pub a0: f64,
@@ -642,6 +696,7 @@ pub(crate) struct Scaled {
     pub q2: f64,
     pub k: f64,
     pub dx: f64,
+    pub gy: f64,
 }
 
 impl Scaled {
@@ -654,16 +709,62 @@ impl Scaled {
             q2: j3 / k,
             k,
             dx,
+            gy: 1.0,
         }
     }
 
+    /// With the lateral-to-longitudinal stiffness ratio gy.
+    pub(crate) fn with_gy(self, gy: f64) -> Self {
+        Scaled { gy, ..self }
+    }
+
+    /// The strip at Y: elastic rates (a, gy·(b1 + q2·X)).
     pub(crate) fn strip(&self, y: f64) -> Strip {
         Strip {
             c: (1.0 - y * y).max(0.0).sqrt(),
             a: self.a0 - self.j3 * y,
-            b1: self.b1,
-            q2: self.q2,
+            b1: self.gy * self.b1,
+            q2: self.gy * self.q2,
+            gy: self.gy,
         }
+    }
+}
+
+/// Return of an elastic trial stress (zx, zy) onto the limit |Z| ≤ L for the
+/// stiffness G = diag(1, gy): the closest point in the energy norm
+/// (Z − Zt)ᵀG⁻¹(Z − Zt), Z = (zx/(1+μ), zy/(1+gy·μ)) with μ ≥ 0 such that
+/// |Z| = L (radial for gy = 1). Used by the grid and viscoelastic schemes.
+pub(crate) fn return_map(zx: f64, zy: f64, l: f64, gy: f64) -> (f64, f64) {
+    let m = zx.hypot(zy);
+    if m <= l {
+        return (zx, zy);
+    }
+    if l <= 0.0 || m == 0.0 {
+        return (0.0, 0.0);
+    }
+    if gy == 1.0 {
+        return (zx * l / m, zy * l / m);
+    }
+    // f(μ) = zx²/(1+μ)² + zy²/(1+gy·μ)² − L² is decreasing and convex, so
+    // Newton from μ = 0 increases monotonically to the root.
+    let mut mu = 0.0_f64;
+    for _ in 0..100 {
+        let (dx, dy) = (1.0 + mu, 1.0 + gy * mu);
+        let (px, py) = (zx / dx, zy / dy);
+        let f = px * px + py * py - l * l;
+        let fp = -2.0 * (px * px / dx + gy * py * py / dy);
+        if f <= 1e-15 * l * l || fp >= 0.0 {
+            break;
+        }
+        mu -= f / fp;
+    }
+    let (px, py) = (zx / (1.0 + mu), zy / (1.0 + gy * mu));
+    // Put it exactly on the limit (Newton stops within round-off).
+    let r = px.hypot(py);
+    if r > 0.0 {
+        (px * l / r, py * l / r)
+    } else {
+        (0.0, 0.0)
     }
 }
 
@@ -812,6 +913,7 @@ mod tests {
             a,
             b1: 0.0,
             q2: 0.0,
+            gy: 1.0,
         };
         // The yield point is found to round-off; the plastic part is RK4
         // (Simpson) on the smooth 1.5·cos²s: error ≈ 5e-8 at h = 0.1 and

@@ -99,7 +99,7 @@ pub fn stress_field(
     let jmax = inp.j1.abs().max(inp.j2.abs()).max(inp.j3.abs());
     let rigid = jmax > J_RIGID;
     let f = if rigid { 1.0 / jmax } else { 1.0 };
-    let sc = Scaled::new(inp.k, inp.j1 * f, inp.j2 * f, inp.j3 * f, inp.dx);
+    let sc = Scaled::new(inp.k, inp.j1 * f, inp.j2 * f, inp.j3 * f, inp.dx).with_gy(inp.gy);
     let h = acc.s_step();
     let mut events = Vec::new();
     for (j, &yj) in y.iter().enumerate() {
@@ -117,7 +117,7 @@ pub fn stress_field(
             let q = j * nx + i;
             let l = 1.5 * (c * c - xi * xi).sqrt();
             if rigid {
-                let (vx, vy) = (st.a, st.b1 + st.q2 * xi);
+                let (vx, vy) = (st.a, (st.b1 + st.q2 * xi) / st.gy);
                 let m = vx.hypot(vy);
                 if m > 0.0 {
                     (zx[q], zy[q]) = (l * vx / m, l * vy / m);
@@ -159,7 +159,8 @@ pub fn stress_field(
                         d += 2.0 * PI;
                     }
                     let rate = |x: f64, n: (f64, f64)| {
-                        (2.0 / 3.0) * ((st.b1 + st.q2 * x) * n.0 - st.a * n.1)
+                        let sn = (x / c).clamp(-1.0, 1.0);
+                        st.theta_rate(sn, (1.0 - sn * sn).max(0.0).sqrt(), n.0, n.1)
                     };
                     let hs = sb - sa;
                     let th = if hs > 0.0 {

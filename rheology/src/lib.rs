@@ -70,6 +70,20 @@
 //!   [`closed::combined_slip_traction`] (eq. 23),
 //!   [`closed::rigid_plastic_slip_traction`] (eq. 24).
 //!
+//! ## Anisotropic stiffness (gy = Ḡy/Ḡx)
+//! The report corrects the measured slope for disc compliance separately
+//! along and across rolling (Table 4-3, Kalker's C11 ≠ C22), i.e. the film and
+//! discs in series act as a stiffness that differs between x and y. With
+//! [`Inputs::with_stiffness_ratio`] the elastic law becomes dZ/dX =
+//! G·(v − plastic part), G = diag(1, gy), the J's formed with Ḡx; the flow
+//! stays associated (plastic strain rate along Z), so on the limit
+//! λ = (n·Gv − dL/dX)/(n·G·n) and θ' = (t·Gv − λ·t·G·n)/L (t ⟂ n), which for
+//! gy = 1 is the isotropic law. Elastic segments keep their closed forms;
+//! the rigid/plastic limit does not depend on gy (Z = L·v/|v|). Checked
+//! against the grid scheme with the energy-norm return mapping
+//! (tests/anisotropy.rs: agreement ≈ 6e-6) and by the exact reductions for
+//! one-directional slip. gy = 1 (the default) is the report's model.
+//!
 //! ## Assumptions
 //! Hertzian pressure and ellipse, constant film thickness, isothermal, no
 //! stress in the inlet, no roller compliance beyond what Ḡ absorbs.
@@ -137,6 +151,10 @@ pub use props::{Limit, Modulus, Properties};
 pub const K_MIN: f64 = 0.01;
 /// Largest supported aspect ratio k.
 pub const K_MAX: f64 = 100.0;
+/// Smallest supported stiffness ratio gy = Ḡy/Ḡx.
+pub const GY_MIN: f64 = 0.1;
+/// Largest supported stiffness ratio gy = Ḡy/Ḡx.
+pub const GY_MAX: f64 = 10.0;
 /// Above this max(|J1|, |J2|, |J3|) the elastic lag is below 1e-12 of the
 /// traction and the elastic/plastic model returns the rigid/plastic solution.
 pub const J_RIGID: f64 = 1e12;
@@ -165,6 +183,9 @@ pub enum RheologyError {
     /// The requested accuracy is outside [1e-9, 0.1].
     #[error("accuracy tol = {0} is outside the supported range [1e-9, 0.1]")]
     Tolerance(f64),
+    /// The stiffness ratio gy = Ḡy/Ḡx is outside [GY_MIN, GY_MAX] or NaN.
+    #[error("stiffness ratio gy = Gy/Gx = {0} is outside the supported range [0.1, 10]")]
+    StiffnessRatio(f64),
     /// A stress-field grid size is outside 1..=4000.
     #[error("grid size {0} is outside the supported range 1..=4000")]
     Grid(usize),
@@ -183,6 +204,11 @@ pub struct Inputs {
     pub j3: f64,
     /// Dimensionless spin-pole offset ΔX = δ/a (App. IV sign: rate J3(X+ΔX)/k).
     pub dx: f64,
+    /// Lateral-to-longitudinal stiffness ratio gy = Ḡy/Ḡx in
+    /// [[`GY_MIN`], [`GY_MAX`]] (1 = isotropic, the report's model). The J's
+    /// are formed with Ḡx; the elastic rate across rolling is gy times the
+    /// slip term (see "Anisotropic stiffness" in the crate docs).
+    pub gy: f64,
 }
 
 impl Inputs {
@@ -193,7 +219,21 @@ impl Inputs {
 
     /// Validated inputs with a spin-pole offset ΔX.
     pub fn with_offset(k: f64, j1: f64, j2: f64, j3: f64, dx: f64) -> Result<Self, RheologyError> {
-        let inp = Inputs { k, j1, j2, j3, dx };
+        let inp = Inputs {
+            k,
+            j1,
+            j2,
+            j3,
+            dx,
+            gy: 1.0,
+        };
+        inp.validate()?;
+        Ok(inp)
+    }
+
+    /// The same inputs with the stiffness ratio gy = Ḡy/Ḡx (validated).
+    pub fn with_stiffness_ratio(self, gy: f64) -> Result<Self, RheologyError> {
+        let inp = Inputs { gy, ..self };
         inp.validate()?;
         Ok(inp)
     }
@@ -212,6 +252,9 @@ impl Inputs {
             if !value.is_finite() {
                 return Err(RheologyError::NotFinite { name, value });
             }
+        }
+        if !(self.gy >= GY_MIN && self.gy <= GY_MAX) {
+            return Err(RheologyError::StiffnessRatio(self.gy));
         }
         Ok(())
     }
@@ -331,7 +374,7 @@ pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, Rh
     inp.validate()?;
     let (j4, j5, j6) = match model {
         Model::ElasticPlastic => {
-            if inp.j3 == 0.0 {
+            if inp.j3 == 0.0 && inp.gy == 1.0 {
                 let (j4, j5) = closed::combined_slip_traction(inp.k, inp.j1, inp.j2);
                 (j4, j5, 0.0)
             } else {
@@ -357,7 +400,7 @@ fn finish(inp: &Inputs, j4: f64, j5: f64, j6: f64) -> Outputs {
 fn rigid_scaled(inp: &Inputs) -> ep::Scaled {
     let m = inp.j1.abs().max(inp.j2.abs()).max(inp.j3.abs());
     let f = if m > 1.0 { 1.0 / m } else { 1.0 };
-    ep::Scaled::new(inp.k, inp.j1 * f, inp.j2 * f, inp.j3 * f, inp.dx)
+    ep::Scaled::new(inp.k, inp.j1 * f, inp.j2 * f, inp.j3 * f, inp.dx).with_gy(inp.gy)
 }
 
 /// Elastic/plastic strip integration at an explicit resolution (no closed-form
@@ -368,7 +411,7 @@ pub fn elastic_plastic(inp: &Inputs, res: &Resolution) -> Result<Outputs, Rheolo
     if m > J_RIGID {
         return rigid_plastic(inp, Accuracy { tol: 1e-6 });
     }
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx);
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
     let (j4, j5, j6) = ep::solve(&sc, res);
     Ok(finish(inp, j4, j5, j6))
 }
@@ -403,7 +446,7 @@ fn adaptive(
     if m > J_RIGID {
         return rigid_plastic(inp, Accuracy { tol: 1e-6 });
     }
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx);
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
     let h = s_step.clamp(1e-4, 0.5);
     let hs = s_step_smooth.clamp(h, 1.0);
     let (j4, j5, j6) = ep::solve_adaptive(&sc, n.clamp(2, quad::MAX_GL), tol, h, hs);
@@ -454,7 +497,7 @@ pub fn viscoelastic(
         y_points: 8,
         s_step: 0.1,
     };
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx);
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
     let (j4, j5, j6) = visco::solve(&sc, &res, nsteps, z0, deborah);
     Ok(finish(inp, j4, j5, j6))
 }
@@ -487,7 +530,7 @@ pub fn grid_reference(
     cells: usize,
 ) -> Result<Outputs, RheologyError> {
     inp.validate()?;
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx);
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
     let (j4, j5, j6) = props::solve(&sc, props, cells.clamp(10, 20000));
     Ok(finish(inp, j4, j5, j6))
 }

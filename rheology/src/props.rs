@@ -10,7 +10,8 @@
 //! The default (G constant, τ_lim pressure-proportional) is what the report's
 //! printed theory uses and is solved by the fast strip integrator. The other
 //! combinations are solved here by a plain grid scheme (elastic predictor
-//! with the exact integral of v over the cell, radial return onto L, strips in
+//! with the exact integral of v over the cell, return onto L (radial; the
+//! energy-norm closest point for a stiffness ratio gy ≠ 1), strips in
 //! Y = sin φ), first order in the cell size, Richardson-extrapolated from n
 //! and 2n cells per strip. Slow (milliseconds) but robust; its accuracy is
 //! ≈ 1e-4 at n = 800, checked in the tests against the strip integrator for
@@ -18,7 +19,7 @@
 
 use std::f64::consts::PI;
 
-use crate::ep::Scaled;
+use crate::ep::{Scaled, return_map};
 
 /// Variation of the shear modulus over the contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -85,11 +86,7 @@ fn grid(sc: &Scaled, props: Properties, n: usize) -> (f64, f64, f64) {
                 Limit::PressureProportional => 1.5 * (c * c - x1 * x1).max(0.0).sqrt(),
                 Limit::Constant => 1.0,
             };
-            let m = zx.hypot(zy);
-            if m > l {
-                zx *= l / m;
-                zy *= l / m;
-            }
+            (zx, zy) = return_map(zx, zy, l, st.gy);
             ix += 0.5 * h * (ox + zx);
             iy += 0.5 * h * (oy + zy);
             ixy += 0.5 * h * (oy * x0 + zy * x1);

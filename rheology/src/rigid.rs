@@ -22,7 +22,8 @@ fn strip_sums(st: &crate::ep::Strip, s_panels: usize, s_points: usize) -> StripS
         for &(t, w) in rule {
             let (sn, cs) = (mid + 0.5 * width * t).sin_cos();
             let x = c * sn;
-            let (vx, vy) = (st.a, st.b1 + st.q2 * x);
+            // Slip velocity v = (a, (b1 + q2·X)/gy) (the strip holds G·v).
+            let (vx, vy) = (st.a, (st.b1 + st.q2 * x) / st.gy);
             let m = vx.hypot(vy);
             if m.is_nan() || m <= 0.0 {
                 continue;

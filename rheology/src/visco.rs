@@ -20,7 +20,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use crate::ep::{Resolution, Scaled, StripSums, contact_integral};
+use crate::ep::{Resolution, Scaled, StripSums, contact_integral, return_map};
 
 /// Relaxation rate μ(|Z|) = Z0·sinh(|Z|/Z0)/(D·|Z|) (→ 1/D at Z = 0).
 #[inline]
@@ -68,24 +68,25 @@ fn strip_sums(st: &crate::ep::Strip, nsteps: usize, z0: f64, d: f64) -> StripSum
         let xm = 0.5 * (x0 + x1);
         // Elastic increment over the step (v is linear in X: exact midpoint).
         let (vx, vy) = (st.a, st.b1 + st.q2 * xm);
-        // Predictor: rate at the start, then at the predicted midpoint.
+        // Predictor: rate at the start, then at the predicted midpoint. The
+        // viscous strain rate μ·Z acts through G = diag(1, gy): Zy relaxes
+        // at gy·μ.
+        let gy = st.gy;
         let m0 = mu(zx.hypot(zy), z0, d);
-        let (e0, p0) = phi1(m0 * 0.5 * dxs);
-        let (pmx, pmy) = (zx * e0 + 0.5 * dxs * p0 * vx, zy * e0 + 0.5 * dxs * p0 * vy);
+        let (e0x, p0x) = phi1(m0 * 0.5 * dxs);
+        let (e0y, p0y) = phi1(gy * m0 * 0.5 * dxs);
+        let (pmx, pmy) = (
+            zx * e0x + 0.5 * dxs * p0x * vx,
+            zy * e0y + 0.5 * dxs * p0y * vy,
+        );
         let mm = mu(pmx.hypot(pmy), z0, d);
-        let (e, p) = phi1(mm * dxs);
-        let mut nx = zx * e + dxs * p * vx;
-        let mut ny = zy * e + dxs * p * vy;
-        // Radial return onto the limit (3/2)·c·cos s1.
+        let (ex, px) = phi1(mm * dxs);
+        let (ey, py) = phi1(gy * mm * dxs);
+        let nx = zx * ex + dxs * px * vx;
+        let ny = zy * ey + dxs * py * vy;
+        // Return onto the limit (3/2)·c·cos s1 (radial for gy = 1).
         let l1 = 1.5 * c * s1.cos().max(0.0);
-        let m = nx.hypot(ny);
-        if m > l1 {
-            let f = if m > 0.0 { l1 / m } else { 0.0 };
-            nx *= f;
-            ny *= f;
-        }
-        zx = nx;
-        zy = ny;
+        (zx, zy) = return_map(nx, ny, l1, gy);
         // Trapezoidal sums in X.
         acc.ix += 0.5 * dxs * (prev.0 + zx);
         acc.iy += 0.5 * dxs * (prev.1 + zy);

@@ -116,7 +116,8 @@ fn accuracy_parameter_is_met_on_random_cases() {
     // 60 pseudo-random cases (fixed seed) over k ∈ [0.05, 20], |J1| ∈
     // [0.1, 32], |J2| ∈ [0.03, 3], |J3| ∈ [0.3, 100], all sign combinations,
     // plus the case that exposed the missing step control near the strips'
-    // crossing of vy = 0 (errors up to 0.2 per strip, 1.2·tol in total).
+    // crossing of vy = 0 (errors up to 0.2 per strip, 1.2·tol in total);
+    // every third case with an anisotropic stiffness ratio gy ∈ [0.3, 3].
     // The reference (128 panels of 8 points, h = 0.004) is checked against
     // a coarser one (64 panels, h = 0.008): their difference bounds its own
     // error and must be < 1e-5, so that error ≤ tol is meaningful at 1e-4.
@@ -139,9 +140,19 @@ fn accuracy_parameter_is_met_on_random_cases() {
         let j3 = signed(-0.5, 2.5);
         cases.push((k, j1, j2, j3));
     }
+    // Every third case also with an anisotropic stiffness gy ∈ [0.3, 3].
+    let mut gys = vec![1.0; cases.len()];
+    for (n, g) in gys.iter_mut().enumerate().skip(1) {
+        if n % 3 == 0 {
+            *g = 10f64.powf(rnd() - 0.5);
+        }
+    }
     let mut worst: f64 = 0.0;
-    for &(k, j1, j2, j3) in &cases {
-        let i = Inputs::new(k, j1, j2, j3).unwrap();
+    for (&(k, j1, j2, j3), &gy) in cases.iter().zip(&gys) {
+        let i = Inputs::new(k, j1, j2, j3)
+            .unwrap()
+            .with_stiffness_ratio(gy)
+            .unwrap();
         let r = run(&i, 128, 0.004);
         let r2 = run(&i, 64, 0.008);
         assert!(
@@ -154,11 +165,14 @@ fn accuracy_parameter_is_met_on_random_cases() {
             worst = worst.max(e / tol);
             if e / tol > 0.4 {
                 println!(
-                    "k={k} J=({j1},{j2},{j3}) tol {tol}: error/tol {:.2}",
+                    "k={k} J=({j1},{j2},{j3}) gy={gy} tol {tol}: error/tol {:.2}",
                     e / tol
                 );
             }
-            assert!(e <= tol, "k={k} J=({j1},{j2},{j3}) tol {tol}: error {e}");
+            assert!(
+                e <= tol,
+                "k={k} J=({j1},{j2},{j3}) gy={gy} tol {tol}: error {e}"
+            );
         }
     }
     println!("worst error/tol over {} cases: {worst:.2}", cases.len());

@@ -228,8 +228,23 @@ fn errors_name_the_quantity() {
         j2: 0.0,
         j3: 0.0,
         dx: 0.0,
+        gy: 1.0,
     };
     assert!(evaluate(&bad, Model::ElasticPlastic, a).is_err());
+    let bad_gy = Inputs {
+        gy: f64::NAN,
+        ..Inputs::new(1.0, 1.0, 0.0, 1.0).unwrap()
+    };
+    assert!(matches!(
+        evaluate(&bad_gy, Model::ElasticPlastic, a),
+        Err(RheologyError::StiffnessRatio(_))
+    ));
+    assert!(
+        Inputs::new(1.0, 1.0, 0.0, 1.0)
+            .unwrap()
+            .with_stiffness_ratio(0.05)
+            .is_err()
+    );
 }
 
 #[test]
