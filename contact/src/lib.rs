@@ -23,9 +23,9 @@
 //!                            μ = τ̄ π a b / N,   m = (8/3) Ḡ a² b / (N h)
 //! compliance (App. IV B7):   m_x, m_y from the measured slope (see Compliance)
 //! J groups (App. IV 11, 12): J1 = (3π/8)(m_x/μ)(ΔU/U)√k
-//!                            J2 = (3π/8)(m_y/μ)(ΔV/U)√k
+//!                            J2 = (3π/8)(m_x/μ)(ΔV/U)√k
 //!                            J3 = (3π/8)(m_x/μ)(ω√(ab)/U)√k
-//! rheology:                  (J4, J5, J6) = J+T(k, J1, J2, J3)
+//! rheology:                  (J4, J5, J6) = J+T(k, J1, J2, J3; gy = m_y/m_x)
 //! forces (App. IV 15, 16):   Fx = μ_f N J4,  Fy = μ_f N J5,  Mz = μ_f N √(ab) J6
 //! losses:                    P = Fx ΔU + Fy ΔV + Mz ω  (W)
 //!                            J7 = J1 J4 + J2 J5 + J3 J6 = (3π/8)√k m P/(μ² N U)  (App. IV 17)
@@ -97,10 +97,12 @@
 //! Those of the composed crates: Hertzian dry-contact pressure and ellipse,
 //! constant film, isothermal J+T model (no thermal correction: the report's
 //! predictions omit it too), rigid-body kinematics at the ellipse centre, spin
-//! pole offset ΔX = 0, steady state. The rheology crate has a single Ḡ: with
-//! compliance on, the longitudinal slope m_x scales J1 and J3 and the lateral
-//! slope m_y scales J2 (an approximation: spin shears the film in both
-//! directions).
+//! pole offset ΔX = 0, steady state. With compliance on, the slopes along and
+//! across rolling differ (Kalker's q_x ≠ q_y): the J groups are formed with
+//! m_x and the rheology gets the stiffness ratio gy = m_y/m_x (its
+//! anisotropic Prandtl–Reuss law, G = diag(1, gy)), so that spin, which
+//! shears the film in both directions, sees each direction's stiffness.
+//! Without compliance m_x = m_y and gy = 1.
 //!
 //! # Example
 //!
@@ -570,7 +572,8 @@ pub struct Evaluation {
     pub p0: f64,
     /// Slope m used for J1 and J3 (longitudinal).
     pub m_used: f64,
-    /// Slope m used for J2 (lateral; equal to `m_used` without compliance).
+    /// Lateral slope m_y; the rheology gets the stiffness ratio gy = m_y/m_x
+    /// (equal to `m_used`, gy = 1, without compliance).
     pub m_side: f64,
     /// Zero-spin peak traction coefficient μ used in the J groups.
     pub mu_used: f64,
@@ -774,11 +777,11 @@ impl TractionContact {
     }
 
     /// Solve the rheology in one rolling frame.
-    fn branch(&self, k: f64, j: [f64; 3]) -> Result<Branch, ContactError> {
+    fn branch(&self, k: f64, j: [f64; 3], gy: f64) -> Result<Branch, ContactError> {
         if j == [0.0; 3] {
             return Ok(Branch { j, out: [0.0; 3] });
         }
-        let inp = Inputs::new(k, j[0], j[1], j[2])?;
+        let inp = Inputs::new(k, j[0], j[1], j[2])?.with_stiffness_ratio(gy)?;
         let o = traction_rheology::evaluate(&inp, self.options.model, self.options.accuracy)?;
         Ok(Branch {
             j,
@@ -803,7 +806,7 @@ impl TractionContact {
         let sqrt_ab = (a * b).sqrt();
         let sk = k.sqrt();
         let cx = 3.0 * PI / 8.0 * (mx / mu) * sk;
-        let cy = 3.0 * PI / 8.0 * (my / mu) * sk;
+        let gy = my / mx;
         let u = state.rolling_speed;
         let uf = self.options.rolling_speed_floor;
         let u_eff = u.abs().max(uf);
@@ -811,18 +814,18 @@ impl TractionContact {
         let w = 0.5 + 0.75 * t - 0.25 * t * t * t;
         let rate = [
             cx * state.slip / u_eff,
-            cy * state.side_slip / u_eff,
+            cx * state.side_slip / u_eff,
             cx * state.spin * sqrt_ab / u_eff,
         ];
         // Frame σ: (σ J1, σ J2, J3).
         let frame = |s: f64| [s * rate[0], s * rate[1], rate[2]];
         let fwd = if w > 0.0 {
-            Some(self.branch(k, frame(1.0))?)
+            Some(self.branch(k, frame(1.0), gy)?)
         } else {
             None
         };
         let rev = if w < 1.0 {
-            Some(self.branch(k, frame(-1.0))?)
+            Some(self.branch(k, frame(-1.0), gy)?)
         } else {
             None
         };

@@ -324,6 +324,52 @@ fn compliance_series_and_conversion() {
 }
 
 #[test]
+fn compliance_gives_the_rheology_its_stiffness_ratio() {
+    // Compliance on, slip + side slip + spin on the k = 5 discs: the J's are
+    // formed with m_x (J2 too) and the rheology gets gy = m_y/m_x; the
+    // result must be the rheology called directly with those inputs (1e-12:
+    // same code path, same accuracy) and obey the dimensional power balance
+    // J7 = (3π/8)√k·m_x·P/(μ²NU) (1e-9).
+    let opts = Options {
+        compliance: Compliance::Discs {
+            material: DiscMaterial::REPORT_STEEL,
+            slope_measured_in: Direction::Side,
+        },
+        classify_regime: false,
+        ..Options::default()
+    };
+    let c = contact(hs_k5(), Fluid::constant(35.0, 0.075).unwrap(), opts);
+    let (n, u, du, dv, w) = (1500.0, 20.0, 0.02, 0.05, 40.0);
+    let r = c.evaluate(&state(n, u, du, dv, w)).unwrap();
+    let gy = r.m_side / r.m_used;
+    assert!(
+        (gy - 1.0).abs() > 0.01,
+        "gy {gy}: the check would be vacuous"
+    );
+    let cx = 3.0 * PI / 8.0 * (r.m_used / r.mu_used) * r.k.sqrt();
+    assert!((r.j2 / (cx * dv / u) - 1.0).abs() < 1e-12);
+    assert!((r.j3 / (cx * w * (r.a * r.b).sqrt() / u) - 1.0).abs() < 1e-12);
+    let inp = Inputs::new(r.k, r.j1, r.j2, r.j3)
+        .unwrap()
+        .with_stiffness_ratio(gy)
+        .unwrap();
+    let o = traction_rheology::evaluate(&inp, Model::ElasticPlastic, Accuracy::default()).unwrap();
+    assert!((o.j4 - r.j4).abs() < 1e-12 && (o.j5 - r.j5).abs() < 1e-12);
+    assert!((o.j6 - r.j6).abs() < 1e-12);
+    let p = r.fx * du + r.fy * dv + r.mz * w;
+    let j7 = cx * p / (r.mu_used * n * u);
+    assert!((r.j7 / j7 - 1.0).abs() < 1e-9, "{} {j7}", r.j7);
+    // The isotropic approximation differs (not a vacuous option).
+    let iso = traction_rheology::evaluate(
+        &Inputs::new(r.k, r.j1, r.j2, r.j3).unwrap(),
+        Model::ElasticPlastic,
+        Accuracy::default(),
+    )
+    .unwrap();
+    assert!((iso.j5 - r.j5).abs() > 1e-3, "{} {}", iso.j5, r.j5);
+}
+
+#[test]
 fn kinematics_input_twin_disc() {
     // Tilted upper disc of the low-speed k = 1 rig (Table 2-4: e = R_y = 12.5 mm,
     // 6°): the general 3-D kinematics must give ω/U of eq. 6 (1e-12 relative).
