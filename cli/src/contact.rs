@@ -18,8 +18,8 @@
 
 use clap::{Args, ValueEnum};
 use traction_contact::{
-    Accuracy, Body, Compliance, Direction, DiscMaterial, EnvelopeRule, Evaluation, Fluid, Model,
-    OperatingState, Options, TractionContact,
+    Accuracy, Body, Compliance, Direction, DiscMaterial, EnvelopeRule, Evaluation, Fluid, Limit,
+    Model, Modulus, OperatingState, Options, Properties, TractionContact,
 };
 
 use crate::error::CliError;
@@ -67,6 +67,24 @@ pub enum ComplianceArg {
     Longitudinal,
 }
 
+/// Distribution of the shear modulus over the contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ModulusArg {
+    /// Ḡ constant (the report's).
+    Constant,
+    /// Proportional to the Hertz pressure.
+    Pressure,
+}
+
+/// Distribution of the limiting shear stress over the contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LimitArg {
+    /// Proportional to the Hertz pressure (the report's).
+    Pressure,
+    /// τ̄ constant.
+    Constant,
+}
+
 /// Options shared by `traction contact` and `traction curve`.
 #[derive(Debug, Args, Clone)]
 pub struct ModelOptions {
@@ -88,6 +106,13 @@ pub struct ModelOptions {
     /// Rolling-speed floor U_f of the J groups (m/s).
     #[arg(long, default_value_t = traction_contact::DEFAULT_ROLLING_SPEED_FLOOR)]
     pub floor: f64,
+    /// Elastic/plastic model: shear modulus over the contact (other than
+    /// `constant` uses the grid scheme: milliseconds per row).
+    #[arg(long, value_enum, default_value_t = ModulusArg::Constant)]
+    pub modulus: ModulusArg,
+    /// Elastic/plastic model: limiting shear stress over the contact.
+    #[arg(long, value_enum, default_value_t = LimitArg::Pressure)]
+    pub limit: LimitArg,
 }
 
 impl ModelOptions {
@@ -114,6 +139,16 @@ impl ModelOptions {
             compliance,
             rolling_speed_floor: self.floor,
             classify_regime: true,
+            properties: Properties {
+                modulus: match self.modulus {
+                    ModulusArg::Constant => Modulus::Constant,
+                    ModulusArg::Pressure => Modulus::PressureProportional,
+                },
+                limit: match self.limit {
+                    LimitArg::Pressure => Limit::PressureProportional,
+                    LimitArg::Constant => Limit::Constant,
+                },
+            },
         })
     }
 

@@ -208,3 +208,47 @@ fn curve_plot_writes_png_and_svg() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn property_distribution_flags() {
+    // --modulus/--limit reach the library (fx equal to TractionContact with
+    // the same Properties to print precision) and change the answer.
+    let input = format!("{HEADER},m,mu\n{HS_K5},1500,20,0.03,-0.02,30,70,52.4,0.089\n");
+    let base = ok(&["contact", "--tol", "1e-3"], &input);
+    let alt = ok(
+        &[
+            "contact",
+            "--tol",
+            "1e-3",
+            "--modulus",
+            "pressure",
+            "--limit",
+            "constant",
+        ],
+        &input,
+    );
+    let col = base[0].iter().position(|c| c == "fx").unwrap();
+    let (f0, f1): (f64, f64) = (base[1][col].parse().unwrap(), alt[1][col].parse().unwrap());
+    let (b1, b2) = hs_k5();
+    let props = traction_contact::Properties {
+        modulus: traction_contact::Modulus::PressureProportional,
+        limit: traction_contact::Limit::Constant,
+    };
+    let c = TractionContact::new(
+        &b1,
+        &b2,
+        Fluid::constant(52.4, 0.089).unwrap(),
+        Options {
+            properties: props,
+            accuracy: traction_contact::Accuracy::new(1e-3).unwrap(),
+            ..Options::default()
+        },
+    )
+    .unwrap();
+    let s = OperatingState::new(1500.0, 20.0, 0.03, -0.02, 30.0, 70.0).unwrap();
+    let fx = c.evaluate(&s).unwrap().fx;
+    assert!((f1 - fx).abs() <= 1e-9 * fx.abs().max(1.0), "{f1} {fx}");
+    assert!((f1 - f0).abs() > 1e-2 * f0.abs(), "{f0} {f1}");
+    let err = fails(&["contact", "--modulus", "linear"], &input);
+    assert!(err.contains("--modulus"), "{err}");
+}

@@ -141,7 +141,7 @@ pub use traction_hertz::Body;
 use traction_hertz::Geometry;
 use traction_kinematics::ContactKinematics;
 use traction_rheology::Inputs;
-pub use traction_rheology::{Accuracy, Model};
+pub use traction_rheology::{Accuracy, Limit, Model, Modulus, Properties};
 
 /// Default rolling-speed floor U_f of the J groups, m/s (see the crate docs).
 pub const DEFAULT_ROLLING_SPEED_FLOOR: f64 = 1e-3;
@@ -422,6 +422,12 @@ pub struct Options {
     /// Classify the regime of App. IV figure 14 (costs a rigid/plastic
     /// evaluation when spin is present).
     pub classify_regime: bool,
+    /// Distribution of the shear modulus and of the limiting shear stress
+    /// over the contact (App. IV eq. 8 and the text after it), for the
+    /// elastic/plastic model. The default (Ḡ constant, limit ∝ pressure) is
+    /// the report's and uses the fast strip integrator; the others use the
+    /// rheology crate's grid scheme (≈ 1e-4, milliseconds per evaluation).
+    pub properties: Properties,
 }
 
 impl Default for Options {
@@ -432,6 +438,7 @@ impl Default for Options {
             compliance: Compliance::Off,
             rolling_speed_floor: DEFAULT_ROLLING_SPEED_FLOOR,
             classify_regime: true,
+            properties: Properties::default(),
         }
     }
 }
@@ -782,7 +789,14 @@ impl TractionContact {
             return Ok(Branch { j, out: [0.0; 3] });
         }
         let inp = Inputs::new(k, j[0], j[1], j[2])?.with_stiffness_ratio(gy)?;
-        let o = traction_rheology::evaluate(&inp, self.options.model, self.options.accuracy)?;
+        let o = match self.options.model {
+            Model::ElasticPlastic => traction_rheology::elastic_plastic_with(
+                &inp,
+                self.options.properties,
+                self.options.accuracy,
+            )?,
+            model => traction_rheology::evaluate(&inp, model, self.options.accuracy)?,
+        };
         Ok(Branch {
             j,
             out: [o.j4, o.j5, o.j6],

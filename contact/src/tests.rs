@@ -370,6 +370,38 @@ fn compliance_gives_the_rheology_its_stiffness_ratio() {
 }
 
 #[test]
+fn property_distribution_option() {
+    // G ∝ pressure, limit constant: the contact passes the option to the
+    // rheology's grid scheme (same J's, same call: 1e-12) and it matters.
+    let props = Properties {
+        modulus: Modulus::PressureProportional,
+        limit: Limit::Constant,
+    };
+    let opts = Options {
+        properties: props,
+        classify_regime: false,
+        accuracy: Accuracy::new(1e-3).unwrap(),
+        ..Options::default()
+    };
+    let fluid = || Fluid::constant(52.4, 0.089).unwrap();
+    let c = contact(hs_k5(), fluid(), opts);
+    let d = contact(
+        hs_k5(),
+        fluid(),
+        Options {
+            properties: Properties::default(),
+            ..opts
+        },
+    );
+    let s = state(1500.0, 20.0, 0.03, -0.02, 30.0);
+    let (r, r0) = (c.evaluate(&s).unwrap(), d.evaluate(&s).unwrap());
+    let inp = Inputs::new(r.k, r.j1, r.j2, r.j3).unwrap();
+    let o = traction_rheology::elastic_plastic_with(&inp, props, opts.accuracy).unwrap();
+    assert!((o.j4 - r.j4).abs() < 1e-12 && (o.j5 - r.j5).abs() < 1e-12);
+    assert!((r.j4 - r0.j4).abs() > 1e-2, "{} {}", r.j4, r0.j4);
+}
+
+#[test]
 fn kinematics_input_twin_disc() {
     // Tilted upper disc of the low-speed k = 1 rig (Table 2-4: e = R_y = 12.5 mm,
     // 6°): the general 3-D kinematics must give ω/U of eq. 6 (1e-12 relative).
