@@ -1,9 +1,9 @@
 //! `traction jt`: the Johnson & Tevaarwerk model in the dimensionless J groups.
 //!
-//! Input columns `k,J1,J2,J3`, optionally `dX` (spin-pole offset) and, for
-//! `--model viscoelastic`, `D` (Deborah number) and optionally `Z0`
-//! (sinh reference stress τ0/τ̄, default 1). Output: the input columns
-//! followed by `J4,J5,J6,J7`.
+//! Input columns `k,J1,J2,J3`, optionally `dX` (spin-pole offset), `gy`
+//! (stiffness ratio Ḡy/Ḡx, default 1) and, for `--model viscoelastic`, `D`
+//! (Deborah number) and optionally `Z0` (sinh reference stress τ0/τ̄,
+//! default 1). Output: the input columns followed by `J4,J5,J6,J7`.
 
 use clap::{Args, ValueEnum};
 use traction_rheology::{Accuracy, Inputs, Model, evaluate};
@@ -25,7 +25,7 @@ pub enum JtModel {
 /// Arguments of `traction jt`.
 #[derive(Debug, Args)]
 pub struct JtArgs {
-    /// Input CSV (`-` for stdin) with columns `k,J1,J2,J3[,dX][,D][,Z0]`.
+    /// Input CSV (`-` for stdin) with columns `k,J1,J2,J3[,dX][,gy][,D][,Z0]`.
     #[arg(long, default_value = "-")]
     pub input: String,
     /// Output CSV (`-` for stdout): the input columns followed by J4,J5,J6,J7.
@@ -63,7 +63,10 @@ pub fn run(args: JtArgs) -> Result<(), CliError> {
                 z0: t.opt_f64(row, "Z0")?.unwrap_or(1.0),
             },
         };
-        let inp = Inputs::with_offset(k, j1, j2, j3, dx).map_err(|e| t.row_error(row, e))?;
+        let gy = t.opt_f64(row, "gy")?.unwrap_or(1.0);
+        let inp = Inputs::with_offset(k, j1, j2, j3, dx)
+            .and_then(|i| i.with_stiffness_ratio(gy))
+            .map_err(|e| t.row_error(row, e))?;
         let o = evaluate(&inp, model, acc).map_err(|e| t.row_error(row, e))?;
         out.push([o.j4, o.j5, o.j6, o.j7]);
     }

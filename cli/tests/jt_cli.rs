@@ -68,3 +68,26 @@ fn errors_name_row_and_column() {
     let (ok, _, err) = run(&["jt"], "k,J1,J2,J3\n1,inf,0,0\n");
     assert!(!ok && err.contains("J1"), "{err}");
 }
+
+#[test]
+fn stiffness_ratio_column() {
+    // Side slip only with gy: the isotropic model at J2' = gy·J2 (exact
+    // reduction, see rheology tests/anisotropy.rs): compare the two rows'
+    // J5 to 1e-6 (tol 1e-8); a gy outside [0.1, 10] names the row.
+    let (ok, out, err) = run(
+        &["jt", "--tol", "1e-8"],
+        "k,J1,J2,J3,gy\n2,0,0.7,0,1.6\n2,0,1.12,0,1\n",
+    );
+    assert!(ok, "{err}");
+    let j5: Vec<f64> = out
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(6).unwrap().parse().unwrap())
+        .collect();
+    assert!((j5[0] - j5[1]).abs() < 1e-6, "{j5:?}");
+    let (ok, _, err) = run(&["jt"], "k,J1,J2,J3,gy\n1,1,0,1,1\n1,1,0,1,20\n");
+    assert!(
+        !ok && err.contains("row 2") && err.contains("stiffness ratio"),
+        "{err}"
+    );
+}
