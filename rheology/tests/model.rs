@@ -378,6 +378,22 @@ proptest! {
     }
 
     #[test]
+    fn anisotropic_stiffness_outputs_are_finite_and_dissipative(
+        k in 0.05f64..20.0, j1 in -1e6f64..1e6, j2 in -30.0f64..30.0, j3 in -60.0f64..60.0,
+        lg in -1.0f64..1.0, big in proptest::bool::ANY,
+    ) {
+        // Any gy in [0.1, 10], J's up to 1e6 (rigid/plastic regime): finite,
+        // bounded, J7 ≥ 0 within the discretisation slack.
+        let j1 = if big { j1 } else { j1 * 3e-5 };
+        let i = Inputs::new(k, j1, j2, j3).unwrap().with_stiffness_ratio(10f64.powf(lg)).unwrap();
+        let o = evaluate(&i, Model::ElasticPlastic, Accuracy::new(1e-2).unwrap()).unwrap();
+        prop_assert!(o.j4.is_finite() && o.j5.is_finite() && o.j6.is_finite() && o.j7.is_finite());
+        prop_assert!(o.j4.hypot(o.j5) <= 1.0 + 1e-6, "{:?}", o);
+        let scale = j1.abs() + j2.abs() + j3.abs();
+        prop_assert!(o.j7 >= -1e-2 * scale, "{:?}", o);
+    }
+
+    #[test]
     fn traction_increases_with_slip_at_zero_spin(k in 0.05f64..20.0, j1 in 0.0f64..20.0, dj in 0.01f64..5.0) {
         let a = closed::slip_traction(k, j1);
         let b = closed::slip_traction(k, j1 + dj);
