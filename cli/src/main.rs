@@ -12,6 +12,7 @@ mod compliance;
 mod contact;
 mod curve;
 mod error;
+mod field;
 mod fit;
 mod fluid;
 mod fmu;
@@ -38,6 +39,8 @@ enum Command {
     Hertz(hertz::HertzArgs),
     /// Johnson & Tevaarwerk traction model in the dimensionless J groups.
     Jt(jt::JtArgs),
+    /// The J+T stress field Z = τ/τ̄ of one case on a grid (CSV).
+    Field(field::FieldArgs),
     /// Fit the report's 16- or 32-term correlations to a data set.
     Fit(fit::FitArgs),
     /// Evaluate a fluid's slope m and peak traction μ correlations in batch.
@@ -62,6 +65,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Hertz(a) => hertz::run(a),
         Command::Jt(a) => jt::run(a),
+        Command::Field(a) => field::run(a),
         Command::Fit(a) => fit::run(a),
         Command::Fluid(a) => fluid::run(a),
         Command::Kinematics(a) => kinematics::run(a),
