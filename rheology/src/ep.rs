@@ -11,7 +11,9 @@
 //!   points of its cubic factor, then safeguarded Newton;
 //! * plastic segments: Z = L·n with the unit vector n rotating at
 //!   dn/ds = (2/3)(v·t)·t, t ⟂ n (Prandtl–Reuss consistency; the 1/√(c−X)
-//!   singularity of dθ/dX is absorbed by dX/ds = c·cos s). Classical RK4 on
+//!   singularity of dθ/dX is absorbed by dX/ds = c·cos s; with an
+//!   anisotropic stiffness gy ≠ 1 the rate of `Strip::theta_rate`, and v is
+//!   then the elastic rate G·v throughout this module). Classical RK4 on
 //!   (n, ∫Zx dX, ∫Zy dX, ∫Zy X dX) (a segment whose largest κ·h stays below
 //!   the stability margin may use a longer step, see `solve_adaptive`);
 //!   steps are sub-divided where the relaxation

@@ -9,7 +9,9 @@
 //!   dZ/dX = v − (Z0/D)·sinh(|Z|/Z0)·Z/|Z|,   |Z| ≤ L = (3/2)√(1−X²−Y²),
 //!
 //! where v is the elastic rate of the elastic/plastic model. On the cap the
-//! flow is Prandtl–Reuss (the radial return below). The viscous term vanishes
+//! flow is Prandtl–Reuss (the radial return below). With a stiffness ratio
+//! gy ≠ 1 the right-hand side is G·(v − viscous rate), G = diag(1, gy), and
+//! the return onto the cap is the energy-norm closest point. The viscous term vanishes
 //! as D → ∞ and the model becomes the elastic/plastic one; for Z0 → ∞ it is
 //! the linear Maxwell fluid dZ/dX = v − Z/D.
 //!
