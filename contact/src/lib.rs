@@ -90,7 +90,8 @@
 //!
 //! Region I takes precedence (at large slip without spin both simplifications
 //! hold). The master curve is the isotropic one (the report's); with disc
-//! compliance (stiffness ratio gy ≠ 1) region I is judged against it too. The classification costs one rigid/plastic evaluation when spin is
+//! compliance (stiffness ratio gy ≠ 1) region I is judged against it too.
+//! The classification costs one rigid/plastic evaluation when spin is
 //! present; [`Options::classify_regime`] = false skips it ([`Regime::NotClassified`]).
 //!
 //! # Assumptions

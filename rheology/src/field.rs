@@ -5,8 +5,8 @@
 //! in elastic segments Z is the exact closed form; on the limit |Z| = L(X)
 //! exactly and the direction angle is interpolated between the integrator's
 //! steps (of [`crate::Accuracy::s_step`] in s, X = c·sin s) by the cubic
-//! Hermite polynomial in s with the flow rule's rate θ' = (2/3)(v·t) at both
-//! ends (fourth order in the step).
+//! Hermite polynomial in s with the flow rule's rate θ' (isotropic:
+//! (2/3)(v·t)) at both ends (fourth order in the step).
 
 use std::f64::consts::PI;
 
