@@ -3,9 +3,13 @@
 //!
 //! Output columns `X,Y,Zx,Zy,state` (X = x/a along rolling, Y = y/b across,
 //! cell centres of an nx × ny grid over [−1, 1]², state `outside`, `elastic`
-//! or `plastic`; Z = 0 outside the contact ellipse).
+//! or `plastic`; Z = 0 outside the contact ellipse). `--png PATH` also draws
+//! heat maps of Zx, Zy, |Z|/L and the state.
+
+use std::path::PathBuf;
 
 use clap::Args;
+use traction_reproduce::plot::{Field, write_heatmaps};
 use traction_rheology::{Accuracy, Inputs, PointState, stress_field};
 
 use crate::error::CliError;
@@ -44,6 +48,9 @@ pub struct FieldArgs {
     /// Output CSV (`-` for stdout).
     #[arg(long, default_value = "-")]
     pub output: String,
+    /// Also draw heat maps (Zx, Zy, |Z|/L, state) to this PNG.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
 }
 
 /// Run the subcommand.
@@ -77,5 +84,50 @@ pub fn run(args: FieldArgs) -> Result<(), CliError> {
             ])?;
         }
     }
-    w.finish()
+    w.finish()?;
+    if let Some(png) = &args.png {
+        // |Z|/L: 1 on the limit; state: 0 outside, 0.5 elastic, 1 plastic.
+        let n = f.zx.len();
+        let (mut ratio, mut state) = (vec![0.0; n], vec![0.0; n]);
+        for q in 0..n {
+            let (x, y) = (f.x[q % f.x.len()], f.y[q / f.x.len()]);
+            let l = 1.5 * (1.0 - x * x - y * y).max(0.0).sqrt();
+            match f.state[q] {
+                PointState::Outside => {}
+                s => {
+                    ratio[q] = if l > 0.0 {
+                        f.zx[q].hypot(f.zy[q]) / l
+                    } else {
+                        1.0
+                    };
+                    state[q] = if s == PointState::Plastic { 1.0 } else { 0.5 };
+                }
+            }
+        }
+        let fields = [
+            ("Zx", f.zx.clone()),
+            ("Zy", f.zy.clone()),
+            ("|Z|/L", ratio),
+            ("state (0 outside, 0.5 elastic, 1 plastic)", state),
+        ]
+        .map(|(name, values)| Field {
+            name: name.to_string(),
+            values,
+        });
+        write_heatmaps(
+            png,
+            &format!(
+                "J+T stress field, k = {}, J = ({}, {}, {}), gy = {}",
+                args.k, args.j1, args.j2, args.j3, args.gy
+            ),
+            "X = x/a (rolling)",
+            "Y = y/b",
+            &f.x,
+            &f.y,
+            &fields,
+        )
+        .map_err(CliError::model)?;
+        eprintln!("heat map: {}", png.display());
+    }
+    Ok(())
 }

@@ -45,3 +45,39 @@ fn field_errors_name_the_quantity() {
     let err = fails(&["field", "--k", "1", "--gy", "50"], "");
     assert!(err.contains("stiffness ratio"), "{err}");
 }
+
+#[test]
+fn field_png_is_written() {
+    let dir = std::env::temp_dir().join(format!("traction-field-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let png = dir.join("f.png");
+    let out = dir.join("f.csv");
+    let rows = ok(
+        &[
+            "field",
+            "--k",
+            "2",
+            "--j1",
+            "1",
+            "--j3",
+            "3",
+            "--nx",
+            "30",
+            "--ny",
+            "20",
+            "--output",
+            out.to_str().unwrap(),
+            "--png",
+            png.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert!(rows.is_empty(), "CSV went to the file");
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap().lines().count(),
+        1 + 30 * 20
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
