@@ -186,9 +186,11 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
                 }
                 (S::Instantiated, 30..=39) | (S::Init, 20..=29) => {
                     if rng.below(4) == 0 {
-                        // Spin peak (mu_spin_user) on or off.
+                        // Spin peak (mu_spin_user) or disc compliance (the
+                        // anisotropic-stiffness path) on or off.
                         let x = rng.below(2) as Fmi2Boolean;
-                        fmi2SetBoolean(c, &vr::SPIN_PEAK, 1, &x)
+                        let r = [vr::SPIN_PEAK, vr::COMPLIANCE][rng.below(2) as usize];
+                        fmi2SetBoolean(c, &r, 1, &x)
                     } else {
                         let r = [vr::SPIN_SOURCE, vr::SIDE_SLIP_SOURCE, vr::RHEOLOGY]
                             [rng.below(3) as usize];
