@@ -865,7 +865,7 @@ pub const VARIABLES: &[Variable] = &[
         causality: Causality::Parameter,
         variability: Variability::Fixed,
         kind: Kind::Boolean { start: Some(false) },
-        description: "Correct the traction slope for disc compliance (report Appendix IV A, B); both discs elastic with Kalker's combined constants of body 1 and body 2 (1/G = (1/G1 + 1/G2)/2, nu/G = (nu1/G1 + nu2/G2)/2); m is taken as measured in side slip",
+        description: "Correct the traction slope for disc compliance (report Appendix IV A, B); both discs elastic with Kalker's combined constants of body 1 and body 2 (1/G = (1/G1 + 1/G2)/2, nu/G = (nu1/G1 + nu2/G2)/2); m is taken as measured in side slip; the J+T model then uses the direction-dependent stiffness ratio Gy/Gx = m_y/m_x",
         depends: Depends::None,
     },
     Variable {
