@@ -405,6 +405,9 @@ impl TractionFmu {
         self.mode
     }
 
+    /// Enter the error (or fatal) state for `e` and return it. Idempotent in
+    /// the error state for non-fatal errors, so getters and refused calls
+    /// there leave the mode unchanged.
     fn fail(&mut self, e: FmuError) -> FmuError {
         self.mode = if e.status == Status::Fatal {
             Mode::Fatal
@@ -429,11 +432,7 @@ impl TractionFmu {
                 "{func}: not allowed in state {:?} (allowed: {allowed:?})",
                 self.mode
             ));
-            Err(if self.mode == Mode::Error {
-                e
-            } else {
-                self.fail(e)
-            })
+            Err(self.fail(e))
         }
     }
 
@@ -739,11 +738,7 @@ impl CoSimulation for TractionFmu {
                         let e = FmuError::error(format!(
                             "fmi2GetReal: value reference {r} is not a Real variable of this FMU"
                         ));
-                        return Err(if self.mode == Mode::Error {
-                            e
-                        } else {
-                            self.fail(e)
-                        });
+                        return Err(self.fail(e));
                     }
                 },
             };
@@ -812,11 +807,7 @@ impl CoSimulation for TractionFmu {
                     let e = FmuError::error(format!(
                         "fmi2GetInteger: value reference {r} is not an Integer or Enumeration variable of this FMU"
                     ));
-                    return Err(if self.mode == Mode::Error {
-                        e
-                    } else {
-                        self.fail(e)
-                    });
+                    return Err(self.fail(e));
                 }
             };
         }
@@ -870,11 +861,7 @@ impl CoSimulation for TractionFmu {
                 let e = FmuError::error(format!(
                     "fmi2GetBoolean: value reference {r} is not a Boolean variable of this FMU"
                 ));
-                return Err(if self.mode == Mode::Error {
-                    e
-                } else {
-                    self.fail(e)
-                });
+                return Err(self.fail(e));
             }
             *v = if r == vr::SPIN_PEAK {
                 self.s.spin_peak
