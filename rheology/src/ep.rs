@@ -280,16 +280,26 @@ impl Strip {
     /// [`CS_MIN`] (see there).
     #[inline]
     pub(crate) fn theta_rate(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
-        let vy = self.vy(self.c * sn);
-        let base = vy * nx - self.a * ny;
-        let r = if self.gy == 1.0 {
+        let k = 2.0 / 3.0;
+        let t = if self.gy == 1.0 {
+            0.0
+        } else {
+            sn / cs.max(CS_MIN)
+        };
+        self.flow_rate(k * self.vy(self.c * sn), k * self.a, t, nx, ny)
+    }
+
+    /// `theta_rate` from the scaled rates: vy_k = (2/3)·vy, a_k = (2/3)·a and
+    /// t = (2/3)·(3/2)·tan s = tan s (capped; unused for gy = 1).
+    #[inline(always)]
+    fn flow_rate(&self, vy_k: f64, a_k: f64, t: f64, nx: f64, ny: f64) -> f64 {
+        let base = vy_k * nx - a_k * ny;
+        if self.gy == 1.0 {
             base
         } else {
-            let t = 1.5 * sn / cs.max(CS_MIN);
-            base - (self.gy - 1.0) * nx * ny * (self.a * nx + vy * ny + t)
+            base - (self.gy - 1.0) * nx * ny * (a_k * nx + vy_k * ny + t)
                 / (nx * nx + self.gy * ny * ny)
-        };
-        (2.0 / 3.0) * r
+        }
     }
 
     #[inline]
@@ -315,21 +325,15 @@ impl Strip {
         let (vy0, vym, vy1) = (k * self.vy(x0), k * self.vy(xm), k * self.vy(x1));
         // Anisotropic stiffness: the λ·t·G·n part of `theta_rate` (k·(3/2)·
         // tan s at the three nodes, capped like there).
-        let (aniso, kg) = (self.gy != 1.0, self.gy - 1.0);
+        // Anisotropic stiffness: tan s at the three nodes (capped, see
+        // `theta_rate`).
         let tan = |sn: f64, cs: f64| sn / cs.max(CS_MIN);
-        let (t0, tm, t1) = if aniso {
+        let (t0, tm, t1) = if self.gy != 1.0 {
             (tan(p.sn, p.cs), tan(sm, cm), tan(s1, c1))
         } else {
             (0.0, 0.0, 0.0)
         };
-        let om = |vy: f64, t: f64, nx: f64, ny: f64| {
-            let base = vy * nx - av * ny;
-            if aniso {
-                base - kg * nx * ny * (av * nx + vy * ny + t) / (nx * nx + self.gy * ny * ny)
-            } else {
-                base
-            }
-        };
+        let om = |vy: f64, t: f64, nx: f64, ny: f64| self.flow_rate(vy, av, t, nx, ny);
         let hh = 0.5 * h;
         // Stage 1 at s0.
         let (n1x, n1y) = (p.nx, p.ny);
