@@ -848,14 +848,37 @@ pub(crate) fn contact_integral_adaptive(
     n: usize,
     tol: f64,
     max_depth: u32,
+    strip_fn: impl FnMut(&Strip) -> StripSums,
+) -> (f64, f64, f64) {
+    contact_integral_adaptive_at(
+        sc,
+        &[-FRAC_PI_2, 0.0, FRAC_PI_2],
+        n,
+        tol,
+        max_depth,
+        strip_fn,
+    )
+}
+
+/// [`contact_integral_adaptive`] starting from the panels between the
+/// sorted breakpoints `breaks` (in φ, from −π/2 to π/2).
+pub(crate) fn contact_integral_adaptive_at(
+    sc: &Scaled,
+    breaks: &[f64],
+    n: usize,
+    tol: f64,
+    max_depth: u32,
     mut strip_fn: impl FnMut(&Strip) -> StripSums,
 ) -> (f64, f64, f64) {
     let mut total = [0.0; 4];
     // (lo, hi, value, depth)
     let mut stack: Vec<(f64, f64, [f64; 4], u32)> = Vec::with_capacity(32);
-    for (lo, hi) in [(-FRAC_PI_2, 0.0), (0.0, FRAC_PI_2)] {
-        let v = panel_sums(sc, lo, hi, n, &mut strip_fn);
-        stack.push((lo, hi, v, 0));
+    for w in breaks.windows(2) {
+        let (lo, hi) = (w[0], w[1]);
+        if hi > lo {
+            let v = panel_sums(sc, lo, hi, n, &mut strip_fn);
+            stack.push((lo, hi, v, 0));
+        }
     }
     while let Some((lo, hi, coarse, depth)) = stack.pop() {
         let m = 0.5 * (lo + hi);
