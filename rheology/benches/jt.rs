@@ -4,7 +4,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use traction_rheology::{Accuracy, Inputs, Model, closed, evaluate};
+use traction_rheology::{Accuracy, Inputs, Model, closed, evaluate, map::Map};
 
 fn benches(c: &mut Criterion) {
     c.bench_function("closed/slip_traction eq22", |b| {
@@ -39,6 +39,62 @@ fn benches(c: &mut Criterion) {
     let a = Accuracy::new(1e-3).unwrap();
     g.bench_function("k=1 J=(1.5,0.3,2) tol=1e-3", |b| {
         b.iter(|| evaluate(black_box(&cases[0].1), Model::RigidPlastic, a).unwrap())
+    });
+    g.finish();
+
+    // The interpolation map: warm (cells built; 64 points within ±2 % of the
+    // case, cycled) and a cold traction curve (fresh map, 100 slip values at
+    // fixed side slip and spin) against the same curve evaluated directly.
+    let mut g = c.benchmark_group("map");
+    g.sample_size(10);
+    for (name, inp) in &cases {
+        for tol in [1e-3, 1e-4] {
+            let a = Accuracy::new(tol).unwrap();
+            let mut map = Map::new(inp.k, 0.0, 1.0, a).unwrap();
+            let pts: Vec<[f64; 3]> = (0..64)
+                .map(|i| {
+                    let f = 1.0 + 0.02 * ((i as f64 * 0.37).sin());
+                    let g = 1.0 + 0.02 * ((i as f64 * 0.73).cos());
+                    [inp.j1 * f + 0.01 * g, inp.j2 * g, inp.j3 * f]
+                })
+                .collect();
+            for p in &pts {
+                map.evaluate(p[0], p[1], p[2]).unwrap();
+            }
+            let s0 = map.stats();
+            let mut n = 0usize;
+            g.bench_function(format!("warm {name} tol={tol:.0e}"), |b| {
+                b.iter(|| {
+                    n = (n + 1) & 63;
+                    let p = black_box(pts[n]);
+                    map.evaluate(p[0], p[1], p[2]).unwrap()
+                })
+            });
+            let s1 = map.stats();
+            eprintln!(
+                "map warm {name} tol={tol:.0e}: interpolated {} direct {} after warm-up",
+                s1.interpolated - s0.interpolated,
+                s1.direct - s0.direct
+            );
+        }
+    }
+    let a = Accuracy::new(1e-3).unwrap();
+    let curve: Vec<[f64; 3]> = (0..100).map(|i| [0.08 * i as f64, 0.3, 4.0]).collect();
+    g.bench_function("cold curve k=5 100 points tol=1e-3", |b| {
+        b.iter(|| {
+            let mut map = Map::new(5.0, 0.0, 1.0, a).unwrap();
+            for p in &curve {
+                black_box(map.evaluate(p[0], p[1], p[2]).unwrap());
+            }
+        })
+    });
+    g.bench_function("direct curve k=5 100 points tol=1e-3", |b| {
+        b.iter(|| {
+            for p in &curve {
+                let inp = Inputs::new(5.0, p[0], p[1], p[2]).unwrap();
+                black_box(evaluate(&inp, Model::ElasticPlastic, a).unwrap());
+            }
+        })
     });
     g.finish();
 }

@@ -1,0 +1,64 @@
+//! Accuracy and hit rate of `map::Map` on random points:
+//! `map_check K TOL N RLOG` (|x| log-uniform in [0.1, 10^(RLOG−1)], reference
+//! `evaluate` at TOL/100). Prints the worst error, the error distribution and
+//! the map's counters.
+#![allow(missing_docs, clippy::unwrap_used)]
+use std::f64::consts::PI;
+use traction_rheology::{Accuracy, Inputs, Model, evaluate, map::Map};
+
+fn main() {
+    let a: Vec<f64> = std::env::args()
+        .skip(1)
+        .map(|s| s.parse().unwrap())
+        .collect();
+    let (k, tol, n, rlog) = (a[0], a[1], a[2] as usize, a[3]);
+    let mut map = Map::new(k, 0.0, 1.0, Accuracy::new(tol).unwrap()).unwrap();
+    let mut seed = 0x1234_5678_9abc_def1u64 ^ (k * 1e6) as u64;
+    let mut rnd = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let (s12, s3) = (1.0 / k.sqrt(), (1.0 + 1.0 / (k * k)).sqrt());
+    let acc = Accuracy::new(tol / 100.0).unwrap();
+    let (mut worst, mut hist) = (0.0f64, [0usize; 5]);
+    let t0 = std::time::Instant::now();
+    for _ in 0..n {
+        let r = 10f64.powf(-1.0 + rlog * rnd());
+        let z = 2.0 * rnd() - 1.0;
+        let p = 2.0 * PI * rnd();
+        let q = (1.0 - z * z).sqrt();
+        let (j1, j2, j3) = (r * q * p.cos() / s12, r * q * p.sin() / s12, r * z / s3);
+        let m = map.evaluate(j1, j2, j3).unwrap();
+        let o = evaluate(
+            &Inputs::new(k, j1, j2, j3).unwrap(),
+            Model::ElasticPlastic,
+            acc,
+        )
+        .unwrap();
+        let err = (m.j4 - o.j4)
+            .abs()
+            .max((m.j5 - o.j5).abs())
+            .max((m.j6 - o.j6).abs());
+        hist[((err / tol * 8.0).floor() as usize).min(4)] += 1;
+        if err > worst {
+            worst = err;
+            if std::env::var("V").is_ok() {
+                println!("worst {err:.2e} at J=({j1:.4},{j2:.4},{j3:.4})");
+            }
+        }
+    }
+    let s = map.stats();
+    println!(
+        "k={k} tol={tol:.0e}: worst {:.2}·tol; err/tol in [0,1/8),..,[1/2,inf): {hist:?}; direct {:.1}% ({} of {}); nodes {}, cells {} ({} rejected); {:.1} s",
+        worst / tol,
+        100.0 * s.direct as f64 / (s.direct + s.interpolated) as f64,
+        s.direct,
+        s.direct + s.interpolated,
+        s.nodes_computed,
+        s.cells_checked,
+        s.cells_rejected,
+        t0.elapsed().as_secs_f64()
+    );
+}

@@ -1,0 +1,613 @@
+//! A lazily built, cell-verified interpolation map of the elastic/plastic
+//! model at fixed k, ΔX and gy — for callers that evaluate the same contact
+//! many times (co-simulation steps, batch tables at one geometry).
+//!
+//! [`crate::evaluate`] integrates the strips afresh on every call (≈ 10–700 µs
+//! with spin, see the crate README). A [`Map`] instead interpolates J4, J5, J6
+//! tricubically between *nodes* that are themselves [`crate::evaluate`]
+//! results at tol/10, and checks every cell before using it:
+//!
+//! * **Coordinates.** x = (J1/√k, J2/√k, J3·√(1 + 1/k²)) (the three elastic
+//!   rates on a common scale), in spherical form: ρ = asinh(|x|) (linear for
+//!   small |x|, logarithmic for large, so the slow log(r)/r approach to the
+//!   rigid/plastic limit is resolved), the polar angle θ from the spin axis and
+//!   the azimuth φ of (J1, J2). The symmetries of the model (crate docs) fold
+//!   the sphere onto J1 ≥ 0, J2 ≥ 0 and give the ghost nodes across the folds
+//!   and across ρ = 0 (J → −J) exactly, so every cell has a centred 4×4×4
+//!   stencil. Steps: Δρ = 0.15, Δθ = π/36, Δφ = π/36.
+//! * **Verification and refinement.** The first time a cell is needed, its
+//!   64 nodes are computed (shared with neighbouring cells) and the
+//!   interpolant is compared with a direct evaluation at the cell centre —
+//!   where the error of tricubic Lagrange interpolation of a smooth function
+//!   is largest. The cell is *accepted* when that error is ≤ tol/4. Otherwise
+//!   the point is looked up in the cell of the next level, whose steps are
+//!   halved (nodes shared with the coarser levels), up to level 3 (steps/8);
+//!   a point whose level-3 cell is rejected too is evaluated directly at
+//!   `tol`. The model has weak singularities along surfaces in J space,
+//!   which cubic interpolation cannot follow — e.g. where the strips along
+//!   the spin pole line stop reaching the limit, J5 ~ (J2 − J2*)^{3/2} (at
+//!   k = 5, J3 = 25.8: J2* ≈ 3.3, right at the report's high-spin traces);
+//!   refinement confines them to thin layers of cells.
+//! * **Accuracy** (measured, not proven: the check samples one point per
+//!   cell). Random points, |x| log-uniform in [0.1, 10⁴], random direction,
+//!   against [`crate::evaluate`] at tol/100 (example `map_check`):
+//!   tol = 1e-3, k = 0.1, 1, 5, 20, 1000 points each: worst error 0.47·tol,
+//!   none evaluated directly; tol = 1e-4, 600 points each: worst 0.53·tol,
+//!   0.2 % evaluated directly. rheology/tests/map.rs checks ≤ tol on 600
+//!   random points (k = 0.1 … 10), with ΔX and gy ≠ 1, and along a curve.
+//! * **Rigid/plastic.** [`Map::rigid_plastic`] maps the rigid/plastic
+//!   solution the same way over the direction (θ, φ) alone (it does not
+//!   depend on |J|): bicubic, checked and refined alike.
+//! * **Determinism.** A result depends only on the inputs, never on which
+//!   cells happened to be built before (nodes and checks are pure functions
+//!   of their indices), so clearing the cache or evaluating in another order
+//!   gives bit-identical results.
+//! * **Cost.** An accepted cell costs one hash lookup per level and 192
+//!   multiply-adds (0.12–0.21 µs measured, crate README); a new cell up to 65
+//!   direct evaluations at tol/10 (milliseconds, tens of milliseconds at high
+//!   spin), amortised over the calls that reuse it: a map pays off for
+//!   thousands of evaluations in a region of J space (a co-simulation near
+//!   an operating point), not for scattered single points, where it is
+//!   ~50× slower than [`crate::evaluate`]. The cache is bounded
+//!   ([`MAX_CELLS`] cells, then cleared).
+//!
+//! Points with J3 = 0 and gy = 1 use the exact closed form; |x| > 10¹⁰ and
+//! J = 0 go straight to [`crate::evaluate`].
+
+use std::collections::HashMap;
+use std::f64::consts::PI;
+use std::hash::{BuildHasherDefault, Hasher};
+
+use crate::{Accuracy, Inputs, Model, Outputs, RheologyError, evaluate};
+
+/// Step in ρ = asinh(|x|).
+const H_RHO: f64 = 0.15;
+/// Cells in θ over [0, π].
+const N_THETA: i32 = 36;
+/// Cells in φ over [0, π/2].
+const N_PHI: i32 = 18;
+/// Finest refinement level (steps halved per level) before a point is
+/// evaluated directly.
+const MAX_LEVEL: u32 = 3;
+/// A cell is accepted when its centre error is at most ACCEPT·tol.
+const ACCEPT: f64 = 0.25;
+/// Beyond this |x| the map evaluates directly (the nodes would need sinh of
+/// large arguments; the model is within 1e-9 of the rigid/plastic limit).
+const R_DIRECT: f64 = 1e10;
+/// Largest number of cells kept before the cache is cleared (≈ 1.6 kB each).
+pub const MAX_CELLS: usize = 1 << 14;
+/// Largest number of nodes kept before the cache is cleared.
+const MAX_NODES: usize = 1 << 18;
+/// Smallest and largest map tolerance.
+const TOL_RANGE: (f64, f64) = (1e-4, 1e-2);
+
+/// Counters of a [`Map`] (for benches and diagnostics).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct MapStats {
+    /// Evaluations answered by interpolation in an accepted cell.
+    pub interpolated: u64,
+    /// Evaluations answered by [`crate::evaluate`] (rejected cells, large |J|).
+    pub direct: u64,
+    /// Evaluations answered by the zero-spin closed form or J = 0.
+    pub closed_form: u64,
+    /// Node evaluations (tol/10) so far.
+    pub nodes_computed: u64,
+    /// Cells checked so far (one direct evaluation each).
+    pub cells_checked: u64,
+    /// Cells rejected by the check so far.
+    pub cells_rejected: u64,
+    /// Rigid/plastic evaluations answered by interpolation.
+    pub rigid_interpolated: u64,
+    /// Rigid/plastic evaluations answered directly.
+    pub rigid_direct: u64,
+}
+
+/// 64 node values of an accepted cell, ρ fastest, then θ, then φ.
+type Stencil = Box<[[f64; 3]; 64]>;
+
+/// FxHash-style hasher for the small integer keys (no DoS concern: the keys
+/// are grid indices).
+#[derive(Default)]
+struct IndexHasher(u64);
+
+impl Hasher for IndexHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+    fn write_i32(&mut self, v: i32) {
+        self.write_u64(v as u32 as u64);
+    }
+    fn write_usize(&mut self, v: usize) {
+        self.write_u64(v as u64);
+    }
+}
+
+type Index = HashMap<[i32; 4], [f64; 3], BuildHasherDefault<IndexHasher>>;
+type Cells = HashMap<[i32; 4], Option<Stencil>, BuildHasherDefault<IndexHasher>>;
+type Index2 = HashMap<[i32; 3], [f64; 3], BuildHasherDefault<IndexHasher>>;
+type Cells2 = HashMap<[i32; 3], Option<Stencil2>, BuildHasherDefault<IndexHasher>>;
+/// 16 node values of an accepted rigid/plastic cell, θ fastest, then φ.
+type Stencil2 = Box<[[f64; 3]; 16]>;
+
+/// Interpolation map of the elastic/plastic model at one (k, ΔX, gy); see
+/// the [module docs](self).
+///
+/// ```
+/// use traction_rheology::{Accuracy, Inputs, Model, evaluate, map::Map};
+///
+/// let mut map = Map::new(5.0, 0.0, 1.0, Accuracy::new(1e-3).unwrap()).unwrap();
+/// let m = map.evaluate(1.2, 0.4, 6.0).unwrap();
+/// let inp = Inputs::new(5.0, 1.2, 0.4, 6.0).unwrap();
+/// let d = evaluate(&inp, Model::ElasticPlastic, Accuracy::new(1e-6).unwrap()).unwrap();
+/// assert!((m.j4 - d.j4).abs() < 1e-3 && (m.j6 - d.j6).abs() < 1e-3);
+/// ```
+#[derive(Debug, Clone)]
+pub struct Map {
+    k: f64,
+    dx: f64,
+    gy: f64,
+    tol: f64,
+    s12: f64,
+    s3: f64,
+    nodes: Index,
+    cells: Cells,
+    rigid_nodes: Index2,
+    rigid_cells: Cells2,
+    stats: MapStats,
+}
+
+impl std::fmt::Debug for IndexHasher {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("IndexHasher")
+    }
+}
+
+impl Map {
+    /// An empty map for aspect ratio `k`, spin-pole offset `dx`, stiffness
+    /// ratio `gy` (validated as [`Inputs`]) and accuracy `acc` (target
+    /// absolute error of J4, J5, J6; tol in [1e-4, 1e-2], else
+    /// [`RheologyError::MapTolerance`]).
+    pub fn new(k: f64, dx: f64, gy: f64, acc: Accuracy) -> Result<Map, RheologyError> {
+        Inputs::with_offset(k, 0.0, 0.0, 0.0, dx)?.with_stiffness_ratio(gy)?;
+        let tol = acc.tol();
+        if !(TOL_RANGE.0..=TOL_RANGE.1).contains(&tol) {
+            return Err(RheologyError::MapTolerance(tol));
+        }
+        Ok(Map {
+            k,
+            dx,
+            gy,
+            tol,
+            s12: 1.0 / k.sqrt(),
+            s3: (1.0 + 1.0 / (k * k)).sqrt(),
+            nodes: Index::default(),
+            cells: Cells::default(),
+            rigid_nodes: Index2::default(),
+            rigid_cells: Cells2::default(),
+            stats: MapStats::default(),
+        })
+    }
+
+    /// Aspect ratio, spin-pole offset and stiffness ratio of this map.
+    pub fn key(&self) -> (f64, f64, f64) {
+        (self.k, self.dx, self.gy)
+    }
+
+    /// The target absolute error.
+    pub fn tol(&self) -> f64 {
+        self.tol
+    }
+
+    /// Counters since construction.
+    pub fn stats(&self) -> MapStats {
+        self.stats
+    }
+
+    /// Drop all cached nodes and cells (results do not change).
+    pub fn clear(&mut self) {
+        self.nodes.clear();
+        self.cells.clear();
+        self.rigid_nodes.clear();
+        self.rigid_cells.clear();
+    }
+
+    /// Evaluate J4..J7 at (J1, J2, J3): interpolated in an accepted cell,
+    /// directly otherwise. Errors: a non-finite J (named).
+    pub fn evaluate(&mut self, j1: f64, j2: f64, j3: f64) -> Result<Outputs, RheologyError> {
+        let inp = Inputs {
+            k: self.k,
+            j1,
+            j2,
+            j3,
+            dx: self.dx,
+            gy: self.gy,
+        };
+        inp.validate()?;
+        if (j3 == 0.0 && self.gy == 1.0) || (j1 == 0.0 && j2 == 0.0 && j3 == 0.0) {
+            self.stats.closed_form += 1;
+            return evaluate(&inp, Model::ElasticPlastic, Accuracy { tol: self.tol });
+        }
+        let (x, s) = fold([j1 * self.s12, j2 * self.s12, j3 * self.s3]);
+        let r = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+        if r > R_DIRECT || r.is_nan() {
+            self.stats.direct += 1;
+            return evaluate(&inp, Model::ElasticPlastic, Accuracy { tol: self.tol });
+        }
+        // Level-0 grid coordinates; u ≤ asinh(1e10)/0.15 ≈ 160, so every
+        // cast below is exact.
+        let u = r.asinh() / H_RHO;
+        let v = (x[2] / r).clamp(-1.0, 1.0).acos() * (f64::from(N_THETA) / PI);
+        let w = x[1].atan2(x[0]) * (2.0 * f64::from(N_PHI) / PI);
+        for q in 0..=MAX_LEVEL {
+            let f = f64::from(1u32 << q);
+            let (uq, vq, wq) = (u * f, v * f, w * f);
+            let i = uq.floor() as i32;
+            let j = (vq.floor() as i32).clamp(0, (N_THETA << q) - 1);
+            let l = (wq.floor() as i32).clamp(0, (N_PHI << q) - 1);
+            let (wi, wj, wl) = (
+                weights(uq - f64::from(i)),
+                weights(vq - f64::from(j)),
+                weights(wq - f64::from(l)),
+            );
+            if let Some(e) = self
+                .cell(q, [i, j, l])?
+                .map(|vals| interpolate(vals, &wi, &wj, &wl))
+            {
+                self.stats.interpolated += 1;
+                let (j4, j5, j6) = (s[0] * e[0], s[1] * e[1], s[2] * e[2]);
+                return Ok(Outputs {
+                    j4,
+                    j5,
+                    j6,
+                    // The model only dissipates; interpolation must not make J7 < 0.
+                    j7: (j1 * j4 + j2 * j5 + j3 * j6).max(0.0),
+                });
+            }
+        }
+        self.stats.direct += 1;
+        evaluate(&inp, Model::ElasticPlastic, Accuracy { tol: self.tol })
+    }
+
+    /// x of grid point (i, j, l) of level q (fractional indices allowed).
+    fn point(q: u32, i: f64, j: f64, l: f64) -> [f64; 3] {
+        let f = f64::from(1u32 << q);
+        let r = (i * H_RHO / f).sinh();
+        let th = j * PI / (f64::from(N_THETA) * f);
+        let ph = l * 0.5 * PI / (f64::from(N_PHI) * f);
+        let (st, ct) = th.sin_cos();
+        let (sp, cp) = ph.sin_cos();
+        [r * st * cp, r * st * sp, r * ct]
+    }
+
+    /// Direct evaluation at x with tolerance `tol`.
+    fn exact(&self, x: [f64; 3], tol: f64) -> Result<[f64; 3], RheologyError> {
+        let inp = Inputs {
+            k: self.k,
+            j1: x[0] / self.s12,
+            j2: x[1] / self.s12,
+            j3: x[2] / self.s3,
+            dx: self.dx,
+            gy: self.gy,
+        };
+        let o = evaluate(&inp, Model::ElasticPlastic, Accuracy { tol })?;
+        Ok([o.j4, o.j5, o.j6])
+    }
+
+    /// Node (i, j, l) of level q, any integer indices (ghosts through the
+    /// symmetries); shared with the coarser levels where they coincide.
+    fn node(&mut self, q: u32, i: i32, j: i32, l: i32) -> Result<[f64; 3], RheologyError> {
+        if i == 0 {
+            return Ok([0.0; 3]);
+        }
+        if i < 0 {
+            // J → −J reverses all three forces.
+            let v = self.node(q, -i, j, l)?;
+            return Ok([-v[0], -v[1], -v[2]]);
+        }
+        let (jj, ll, s) = angles(q, j, l);
+        // The coarsest level holding the point.
+        let (mut qq, mut ii, mut jj, mut ll) = (q, i, jj, ll);
+        while qq > 0 && (ii | jj | ll) & 1 == 0 {
+            qq -= 1;
+            ii /= 2;
+            jj /= 2;
+            ll /= 2;
+        }
+        let key = [qq as i32, ii, jj, ll];
+        let v = match self.nodes.get(&key) {
+            Some(v) => *v,
+            None => {
+                let x = Self::point(qq, f64::from(ii), f64::from(jj), f64::from(ll));
+                let v = self.exact(x, 0.1 * self.tol)?;
+                self.stats.nodes_computed += 1;
+                self.nodes.insert(key, v);
+                v
+            }
+        };
+        Ok([s[0] * v[0], s[1] * v[1], s[2] * v[2]])
+    }
+
+    /// The cell of level q with lower corner (i, j, l): its stencil if accepted.
+    fn cell(&mut self, q: u32, c: [i32; 3]) -> Result<Option<&Stencil>, RheologyError> {
+        let key = [q as i32, c[0], c[1], c[2]];
+        if !self.cells.contains_key(&key) {
+            if self.cells.len() >= MAX_CELLS || self.nodes.len() >= MAX_NODES {
+                self.clear();
+            }
+            let mut vals: Stencil = Box::new([[0.0; 3]; 64]);
+            for a in 0..4 {
+                for b in 0..4 {
+                    for d in 0..4 {
+                        vals[(a * 4 + b) * 4 + d] = self.node(
+                            q,
+                            c[0] - 1 + d as i32,
+                            c[1] - 1 + b as i32,
+                            c[2] - 1 + a as i32,
+                        )?;
+                    }
+                }
+            }
+            let w = weights(0.5);
+            let e = interpolate(&vals, &w, &w, &w);
+            let x = Self::point(
+                q,
+                f64::from(c[0]) + 0.5,
+                f64::from(c[1]) + 0.5,
+                f64::from(c[2]) + 0.5,
+            );
+            let ex = self.exact(x, 0.1 * self.tol)?;
+            self.stats.cells_checked += 1;
+            let err = (0..3).map(|n| (e[n] - ex[n]).abs()).fold(0.0, f64::max);
+            let accepted = err <= ACCEPT * self.tol;
+            if !accepted {
+                self.stats.cells_rejected += 1;
+            }
+            self.cells.insert(key, accepted.then_some(vals));
+        }
+        Ok(self.cells.get(&key).and_then(|v| v.as_ref()))
+    }
+
+    /// The rigid/plastic model ([`crate::rigid_plastic`]) at (J1, J2, J3)
+    /// through a second, two-dimensional map over the direction (θ, φ) of x
+    /// (the rigid/plastic solution depends on the direction only), bicubic,
+    /// with the same cell check and refinement. J3 = 0 and J = 0 are
+    /// evaluated directly. Used for the regime classification of
+    /// traction-contact.
+    pub fn rigid_plastic(&mut self, j1: f64, j2: f64, j3: f64) -> Result<Outputs, RheologyError> {
+        let inp = Inputs {
+            k: self.k,
+            j1,
+            j2,
+            j3,
+            dx: self.dx,
+            gy: self.gy,
+        };
+        inp.validate()?;
+        if j3 == 0.0 {
+            self.stats.rigid_direct += 1;
+            return crate::rigid_plastic(&inp, Accuracy { tol: self.tol });
+        }
+        // Scale first: only the direction matters, and |J| may be near f64::MAX.
+        let m = j1.abs().max(j2.abs()).max(j3.abs());
+        let (x, s) = fold([j1 / m * self.s12, j2 / m * self.s12, j3 / m * self.s3]);
+        let r = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+        let v = (x[2] / r).clamp(-1.0, 1.0).acos() * (f64::from(N_THETA) / PI);
+        let w = x[1].atan2(x[0]) * (2.0 * f64::from(N_PHI) / PI);
+        for q in 0..=MAX_LEVEL {
+            let f = f64::from(1u32 << q);
+            let (vq, wq) = (v * f, w * f);
+            let j = (vq.floor() as i32).clamp(0, (N_THETA << q) - 1);
+            let l = (wq.floor() as i32).clamp(0, (N_PHI << q) - 1);
+            let (wj, wl) = (weights(vq - f64::from(j)), weights(wq - f64::from(l)));
+            if let Some(e) = self
+                .rigid_cell(q, [j, l])?
+                .map(|vals| interpolate2(vals, &wj, &wl))
+            {
+                self.stats.rigid_interpolated += 1;
+                let (j4, j5, j6) = (s[0] * e[0], s[1] * e[1], s[2] * e[2]);
+                return Ok(Outputs {
+                    j4,
+                    j5,
+                    j6,
+                    j7: (j1 * j4 + j2 * j5 + j3 * j6).max(0.0),
+                });
+            }
+        }
+        self.stats.rigid_direct += 1;
+        crate::rigid_plastic(&inp, Accuracy { tol: self.tol })
+    }
+
+    /// Rigid/plastic node (j, l) of level q (any integers, folded).
+    fn rigid_node(&mut self, q: u32, j: i32, l: i32) -> Result<[f64; 3], RheologyError> {
+        let (jj, ll, s) = angles(q, j, l);
+        let (mut qq, mut jj, mut ll) = (q, jj, ll);
+        while qq > 0 && (jj | ll) & 1 == 0 {
+            qq -= 1;
+            jj /= 2;
+            ll /= 2;
+        }
+        let key = [qq as i32, jj, ll];
+        let v = match self.rigid_nodes.get(&key) {
+            Some(v) => *v,
+            None => {
+                let v = self.rigid_exact(Self::point(qq, 1.0, f64::from(jj), f64::from(ll)))?;
+                self.stats.nodes_computed += 1;
+                self.rigid_nodes.insert(key, v);
+                v
+            }
+        };
+        Ok([s[0] * v[0], s[1] * v[1], s[2] * v[2]])
+    }
+
+    /// Direct rigid/plastic evaluation in direction x at tol/10.
+    fn rigid_exact(&self, x: [f64; 3]) -> Result<[f64; 3], RheologyError> {
+        let inp = Inputs {
+            k: self.k,
+            j1: x[0] / self.s12,
+            j2: x[1] / self.s12,
+            j3: x[2] / self.s3,
+            dx: self.dx,
+            gy: self.gy,
+        };
+        let o = crate::rigid_plastic(
+            &inp,
+            Accuracy {
+                tol: 0.1 * self.tol,
+            },
+        )?;
+        Ok([o.j4, o.j5, o.j6])
+    }
+
+    /// The rigid/plastic cell of level q with lower corner (j, l), checked
+    /// at its centre like the elastic/plastic cells.
+    fn rigid_cell(&mut self, q: u32, c: [i32; 2]) -> Result<Option<&Stencil2>, RheologyError> {
+        let key = [q as i32, c[0], c[1]];
+        if !self.rigid_cells.contains_key(&key) {
+            if self.rigid_cells.len() >= MAX_CELLS || self.rigid_nodes.len() >= MAX_NODES {
+                self.rigid_nodes.clear();
+                self.rigid_cells.clear();
+            }
+            let mut vals: Stencil2 = Box::new([[0.0; 3]; 16]);
+            for a in 0..4 {
+                for b in 0..4 {
+                    vals[a * 4 + b] =
+                        self.rigid_node(q, c[0] - 1 + b as i32, c[1] - 1 + a as i32)?;
+                }
+            }
+            let w = weights(0.5);
+            let e = interpolate2(&vals, &w, &w);
+            let x = Self::point(q, 1.0, f64::from(c[0]) + 0.5, f64::from(c[1]) + 0.5);
+            let ex = self.rigid_exact(x)?;
+            self.stats.cells_checked += 1;
+            let err = (0..3).map(|n| (e[n] - ex[n]).abs()).fold(0.0, f64::max);
+            let accepted = err <= ACCEPT * self.tol;
+            if !accepted {
+                self.stats.cells_rejected += 1;
+            }
+            self.rigid_cells.insert(key, accepted.then_some(vals));
+        }
+        Ok(self.rigid_cells.get(&key).and_then(|v| v.as_ref()))
+    }
+}
+
+/// Canonical angular indices of level q for any (j, l): inside the base
+/// range [0, N_THETA·2^q] × [0, N_PHI·2^q] through the folds, with the signs
+/// to apply to (J4, J5, J6), and φ index 0 on the spin axis.
+fn angles(q: u32, j: i32, l: i32) -> (i32, i32, [f64; 3]) {
+    let (nt, np) = (N_THETA << q, N_PHI << q);
+    let (jj, mut ll, s) = if (0..=nt).contains(&j) && (0..=np).contains(&l) {
+        (j, l, [1.0; 3])
+    } else {
+        let th = f64::from(j) * PI / f64::from(nt);
+        let ph = f64::from(l) * 0.5 * PI / f64::from(np);
+        let (st, ct) = th.sin_cos();
+        let (sp, cp) = ph.sin_cos();
+        // + 0.0 turns −0.0 into +0.0 so that atan2 stays in [0, π/2].
+        let (x, s) = fold([st * cp + 0.0, st * sp + 0.0, ct]);
+        let th2 = x[2].clamp(-1.0, 1.0).acos();
+        let ph2 = (x[1] + 0.0).atan2(x[0] + 0.0);
+        (
+            (th2 * f64::from(nt) / PI).round() as i32,
+            (ph2 * 2.0 * f64::from(np) / PI).round() as i32,
+            s,
+        )
+    };
+    // On the spin axis every φ is the same point.
+    if jj == 0 || jj == nt {
+        ll = 0;
+    }
+    (jj, ll, s)
+}
+
+/// Fold x onto x1 ≥ 0, x2 ≥ 0 with the model's symmetries; the signs to
+/// apply to (J4, J5, J6). J1 → −J1 reverses J4 only; the mirror
+/// (J1, −J2, −J3) reverses J5 and J6.
+fn fold(mut x: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+    let mut s = [1.0; 3];
+    if x[0] < 0.0 {
+        x[0] = -x[0];
+        s[0] = -1.0;
+    }
+    if x[1] < 0.0 {
+        x[1] = -x[1];
+        x[2] = -x[2];
+        s[1] = -1.0;
+        s[2] = -1.0;
+    }
+    (x, s)
+}
+
+/// Cubic Lagrange weights of nodes −1, 0, 1, 2 at t ∈ [0, 1).
+fn weights(t: f64) -> [f64; 4] {
+    let (tp, tm, tm2) = (t + 1.0, t - 1.0, t - 2.0);
+    [
+        -t * tm * tm2 / 6.0,
+        tp * tm * tm2 / 2.0,
+        -tp * t * tm2 / 2.0,
+        tp * t * tm / 6.0,
+    ]
+}
+
+fn interpolate2(v: &[[f64; 3]; 16], wj: &[f64; 4], wl: &[f64; 4]) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    for (a, wa) in wl.iter().enumerate() {
+        for (x, wb) in v[a * 4..a * 4 + 4].iter().zip(wj) {
+            let w = wa * wb;
+            out[0] += w * x[0];
+            out[1] += w * x[1];
+            out[2] += w * x[2];
+        }
+    }
+    out
+}
+
+fn interpolate(v: &[[f64; 3]; 64], wi: &[f64; 4], wj: &[f64; 4], wl: &[f64; 4]) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    for (a, wa) in wl.iter().enumerate() {
+        for (b, wb) in wj.iter().enumerate() {
+            let w2 = wa * wb;
+            let row = &v[(a * 4 + b) * 4..(a * 4 + b) * 4 + 4];
+            for (x, wd) in row.iter().zip(wi) {
+                let w = w2 * wd;
+                out[0] += w * x[0];
+                out[1] += w * x[1];
+                out[2] += w * x[2];
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn weights_reproduce_cubics() {
+        // Lagrange weights interpolate any cubic exactly (1e-13, round-off).
+        for &t in &[0.0, 0.25, 0.5, 0.9] {
+            let w = weights(t);
+            for p in 0..4 {
+                let f = |x: f64| x.powi(p) - 0.5 * x;
+                let s: f64 = (0..4).map(|n| w[n] * f(n as f64 - 1.0)).sum();
+                assert!((s - f(t)).abs() < 1e-13, "t {t} p {p}");
+            }
+        }
+    }
+
+    #[test]
+    fn fold_lands_in_the_base_quadrant() {
+        for x in [[-1.0, -2.0, 3.0], [1.0, -2.0, -3.0], [-1.0, 2.0, 3.0]] {
+            let (y, _) = fold(x);
+            assert!(y[0] >= 0.0 && y[1] >= 0.0);
+        }
+    }
+}
