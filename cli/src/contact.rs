@@ -149,6 +149,9 @@ impl ModelOptions {
                     LimitArg::Constant => Limit::Constant,
                 },
             },
+            // Rows are independent contacts: a map would be built per row
+            // and never reused.
+            map: false,
         })
     }
 

@@ -65,6 +65,43 @@ fn bench(c: &mut Criterion) {
     c.bench_function("evaluate, spin, tol 1e-3, no regime", |b| {
         b.iter(|| coarse.evaluate(black_box(&s)))
     });
+    // Options::map: the interpolation map, warm (slip varied within ±1 % so
+    // that the points differ but stay in built cells), with the regime.
+    for tol in [1e-3, 1e-4] {
+        let mapped = contact(Options {
+            accuracy: Accuracy::new(tol).expect("tol"),
+            map: true,
+            ..Options::default()
+        });
+        let states: Vec<OperatingState> = (0..64)
+            .map(|i| {
+                let du = 0.4 * (1.0 + 0.01 * (f64::from(i) * 0.37).sin());
+                OperatingState::new(5000.0, 80.0, du, 80.0 * 8.22e-3, omega, 73.0).expect("state")
+            })
+            .collect();
+        for st in &states {
+            mapped.evaluate(st).expect("evaluation");
+        }
+        let before = mapped.map_stats().unwrap_or_default();
+        let mut n = 0usize;
+        c.bench_function(
+            &format!("evaluate, spin, map (warm), tol {tol:.0e}, regime"),
+            |b| {
+                b.iter(|| {
+                    n = (n + 1) & 63;
+                    mapped.evaluate(black_box(&states[n]))
+                })
+            },
+        );
+        let after = mapped.map_stats().unwrap_or_default();
+        eprintln!(
+            "map tol {tol:.0e}: interpolated {} direct {}, rigid interpolated {} direct {}",
+            after.interpolated - before.interpolated,
+            after.direct - before.direct,
+            after.rigid_interpolated - before.rigid_interpolated,
+            after.rigid_direct - before.rigid_direct
+        );
+    }
     // With the report fluid: Hertz + three correlations (m, μ, μ_s) + rheology.
     let (b1, b2) = bodies();
     let report = TractionContact::new(

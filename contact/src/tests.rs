@@ -370,6 +370,77 @@ fn compliance_gives_the_rheology_its_stiffness_ratio() {
 }
 
 #[test]
+fn interpolation_map_option() {
+    // Options::map: the same contact with the rheology's interpolation map
+    // instead of direct integration. Forces within the accuracy: |ΔJ4..6| ≤
+    // tol = 1e-3 (the map's own contract, rheology/tests/map.rs) against the
+    // direct result at 1e-5; a slip sweep at spin reuses cells (≥ 80 %
+    // interpolated); the regime classification uses the map's rigid/plastic
+    // solution and agrees; with compliance (gy ≠ 1) the elastic/plastic map
+    // is not used and the forces are bit-identical to the direct ones; a
+    // clone carries the map.
+    let acc = Accuracy::new(1e-3).unwrap();
+    let fluid = Fluid::constant(35.0, 0.075).unwrap();
+    let mapped = contact(
+        hs_k5(),
+        fluid.clone(),
+        Options {
+            accuracy: acc,
+            map: true,
+            ..Options::default()
+        },
+    );
+    let direct = contact(
+        hs_k5(),
+        fluid.clone(),
+        Options {
+            accuracy: Accuracy::new(1e-5).unwrap(),
+            ..Options::default()
+        },
+    );
+    assert!(mapped.map_stats().is_none());
+    // Spin 40 and 400 rad/s: J3 ≈ 2 and 21 (the report's high-spin traces).
+    for n in 0..60 {
+        let du = 0.002 * (n % 30) as f64 - 0.03;
+        let w = if n < 30 { 40.0 } else { 400.0 };
+        let st = state(1500.0, 20.0, du, 0.01, w);
+        let (m, d) = (mapped.evaluate(&st).unwrap(), direct.evaluate(&st).unwrap());
+        for (x, y) in [(m.j4, d.j4), (m.j5, d.j5), (m.j6, d.j6)] {
+            assert!((x - y).abs() <= 1e-3, "du {du}: {x} vs {y}");
+        }
+        assert!((m.fx - d.fx).abs() <= 1e-3 * d.mu_force * 1500.0);
+        assert_eq!(m.regime, d.regime, "du {du} w {w}");
+        assert!(m.loss >= 0.0 && m.j7 >= 0.0);
+    }
+    let s = mapped.map_stats().unwrap();
+    assert!(s.interpolated >= 48, "{s:?}");
+    let copy = mapped.clone();
+    assert_eq!(copy.map_stats(), mapped.map_stats());
+    let st = state(1500.0, 20.0, 0.011, 0.01, 40.0);
+    assert_eq!(copy.evaluate(&st).unwrap(), mapped.evaluate(&st).unwrap());
+    // Compliance on: gy = m_y/m_x ≠ 1, the map does not apply.
+    let compliant = |map| Options {
+        accuracy: acc,
+        compliance: Compliance::Discs {
+            material: DiscMaterial::REPORT_STEEL,
+            slope_measured_in: Direction::Side,
+        },
+        map,
+        ..Options::default()
+    };
+    let (c1, c0) = (
+        contact(hs_k5(), fluid.clone(), compliant(true)),
+        contact(hs_k5(), fluid, compliant(false)),
+    );
+    let (e1, e0) = (c1.evaluate(&st).unwrap(), c0.evaluate(&st).unwrap());
+    assert_eq!((e1.fx, e1.fy, e1.mz, e1.j4), (e0.fx, e0.fy, e0.mz, e0.j4));
+    // Only the regime classification used the (rigid/plastic) map.
+    let s1 = c1.map_stats().unwrap_or_default();
+    assert_eq!(s1.interpolated + s1.direct, 0, "{s1:?}");
+    assert_eq!(e1.regime, e0.regime);
+}
+
+#[test]
 fn property_distribution_option() {
     // G ∝ pressure, limit constant: the contact passes the option to the
     // rheology's grid scheme (same J's, same call: 1e-12) and it matters.
