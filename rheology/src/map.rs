@@ -75,9 +75,9 @@ const ACCEPT: f64 = 0.25;
 /// large arguments; the model is within 1e-9 of the rigid/plastic limit).
 const R_DIRECT: f64 = 1e10;
 /// Largest number of cells kept before the cache is cleared (≈ 1.6 kB each).
-pub const MAX_CELLS: usize = 1 << 14;
+pub const MAX_CELLS: usize = 1 << 12;
 /// Largest number of nodes kept before the cache is cleared.
-const MAX_NODES: usize = 1 << 18;
+const MAX_NODES: usize = 1 << 16;
 /// Smallest and largest map tolerance.
 const TOL_RANGE: (f64, f64) = (1e-4, 1e-2);
 
