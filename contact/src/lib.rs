@@ -143,8 +143,7 @@ pub use traction_hertz::Body;
 use traction_hertz::Geometry;
 use traction_kinematics::ContactKinematics;
 use traction_rheology::Inputs;
-use traction_rheology::map::Map;
-pub use traction_rheology::map::MapStats;
+pub use traction_rheology::map::{Map, MapStats};
 pub use traction_rheology::{Accuracy, Limit, Model, Modulus, Properties};
 
 /// Accuracy range in which [`Options::map`] applies (the map's range).
@@ -724,6 +723,25 @@ impl TractionContact {
             discs,
             map: MapCache::default(),
         })
+    }
+
+    /// Move the interpolation map out of this contact (None if it has none),
+    /// e.g. to hand it to a contact rebuilt with other loads or fluids.
+    pub fn take_map(&self) -> Option<Map> {
+        self.map.lock().take()
+    }
+
+    /// Adopt a map built by another contact. Its values depend only on k and
+    /// the accuracy, so it is kept when those match this contact's and
+    /// [`Options::map`] is on (returns true); otherwise it is dropped.
+    pub fn adopt_map(&self, map: Map) -> bool {
+        let ok = self.options.map
+            && map.key() == (self.geometry.k, 0.0, 1.0)
+            && map.tol() == self.options.accuracy.tol();
+        if ok {
+            *self.map.lock() = Some(map);
+        }
+        ok
     }
 
     /// Counters of the interpolation map ([`Options::map`]); None until the
