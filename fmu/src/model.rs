@@ -204,6 +204,7 @@ pub struct Snapshot {
     enums: [i32; N_ENUMS],
     compliance: bool,
     spin_peak: bool,
+    map: bool,
     outputs: [f64; N_OUT],
     regime: i32,
     dirty: bool,
@@ -213,7 +214,7 @@ pub struct Snapshot {
 const N_ENUMS: usize = 5;
 const MAGIC: &[u8; 8] = b"TRACFMU2";
 const SNAPSHOT_LEN: usize =
-    8 + 1 + 8 * 2 + 8 * N_REAL_PARAMS + 8 * N_INPUTS + 4 * N_ENUMS + 2 + 8 * N_OUT + 4 + 2 + 16;
+    8 + 1 + 8 * 2 + 8 * N_REAL_PARAMS + 8 * N_INPUTS + 4 * N_ENUMS + 3 + 8 * N_OUT + 4 + 2 + 16;
 
 /// Index of an Enumeration parameter in [`Snapshot::enums`].
 fn enum_index(r: u32) -> Option<usize> {
@@ -231,6 +232,7 @@ impl Snapshot {
         let mut enums = [0; N_ENUMS];
         let mut compliance = false;
         let mut spin_peak = false;
+        let mut map = false;
         for v in variables::VARIABLES {
             match (v.causality, v.kind) {
                 (Causality::Parameter, Kind::Real { start: Some(s), .. }) => {
@@ -244,13 +246,11 @@ impl Snapshot {
                         enums[i] = s;
                     }
                 }
-                (Causality::Parameter, Kind::Boolean { start: Some(s) }) => {
-                    if v.vr == vr::SPIN_PEAK {
-                        spin_peak = s;
-                    } else {
-                        compliance = s;
-                    }
-                }
+                (Causality::Parameter, Kind::Boolean { start: Some(s) }) => match v.vr {
+                    vr::SPIN_PEAK => spin_peak = s,
+                    vr::RHEOLOGY_MAP => map = s,
+                    _ => compliance = s,
+                },
                 _ => {}
             }
         }
@@ -263,6 +263,7 @@ impl Snapshot {
             enums,
             compliance,
             spin_peak,
+            map,
             outputs: [0.0; N_OUT],
             regime: 0,
             dirty: true,
@@ -284,6 +285,7 @@ impl Snapshot {
         }
         b.push(u8::from(self.compliance));
         b.push(u8::from(self.spin_peak));
+        b.push(u8::from(self.map));
         for x in &self.outputs {
             b.extend_from_slice(&x.to_bits().to_le_bytes());
         }
@@ -349,6 +351,7 @@ impl Snapshot {
         }
         let compliance = take(1)[0] != 0;
         let spin_peak = take(1)[0] != 0;
+        let map = take(1)[0] != 0;
         let mut outputs = [0.0; N_OUT];
         for p in &mut outputs {
             *p = f(take(8));
@@ -365,6 +368,7 @@ impl Snapshot {
             enums,
             compliance,
             spin_peak,
+            map,
             outputs,
             regime,
             dirty,
@@ -379,6 +383,9 @@ pub struct TractionFmu {
     s: Snapshot,
     /// The contact built from the current parameters (None: rebuild).
     contact: Option<Contact>,
+    /// The rheology map of the last contact, offered to the next one (kept
+    /// when k and the tolerance are unchanged; see `drop_contact`).
+    spare_map: Option<traction_contact::Map>,
     /// Lifecycle state (Error/Fatal are not part of a snapshot).
     mode: Mode,
 }
@@ -496,7 +503,19 @@ impl TractionFmu {
             mu_spin_user: p[vr::MU_SPIN_USER as usize - 1],
             compliance: self.s.compliance,
             u_reg: p[vr::U_REG as usize - 1],
+            tolerance: p[vr::RHEOLOGY_TOLERANCE as usize - 1],
+            map: self.s.map,
         })
+    }
+
+    /// Invalidate the contact (parameters changed), keeping its rheology map
+    /// for the next one: the map's values depend only on k and the
+    /// tolerance, so a rebuilt contact with the same ones reuses its cells
+    /// (results are the same with or without it).
+    fn drop_contact(&mut self) {
+        if let Some(m) = self.contact.take().and_then(|c| c.take_map()) {
+            self.spare_map = Some(m);
+        }
     }
 
     fn contact(&mut self) -> Result<&Contact, FmuError> {
@@ -504,6 +523,9 @@ impl TractionFmu {
             let p = self.physics_parameters()?;
             let c = Contact::new(&p)
                 .map_err(|e: PhysicsError| FmuError::error(format!("invalid parameters: {e}")))?;
+            if let Some(m) = self.spare_map.take() {
+                c.adopt_map(m);
+            }
             self.contact = Some(c);
         }
         self.contact
@@ -659,6 +681,7 @@ impl CoSimulation for TractionFmu {
         Ok(Self {
             s: Snapshot::start_values(),
             contact: None,
+            spare_map: None,
             mode: Mode::Instantiated,
         })
     }
@@ -714,9 +737,11 @@ impl CoSimulation for TractionFmu {
                 Mode::Error,
             ],
         )?;
+        self.drop_contact();
         *self = Self {
             s: Snapshot::start_values(),
             contact: None,
+            spare_map: self.spare_map.take(),
             mode: Mode::Instantiated,
         };
         Ok(Status::Ok)
@@ -775,7 +800,7 @@ impl CoSimulation for TractionFmu {
                         ))));
                     }
                     self.s.params[r as usize - 1] = x;
-                    self.contact = None;
+                    self.drop_contact();
                 }
                 Causality::Input => {
                     self.require("fmi2SetReal of an input", SETTABLE_INPUT_MODES)?;
@@ -848,7 +873,7 @@ impl CoSimulation for TractionFmu {
             if let Some(i) = enum_index(r) {
                 self.s.enums[i] = x;
             }
-            self.contact = None;
+            self.drop_contact();
             self.s.dirty = true;
         }
         Ok(Status::Ok)
@@ -857,16 +882,16 @@ impl CoSimulation for TractionFmu {
     fn get_boolean(&mut self, vrs: &[u32], values: &mut [bool]) -> FmuResult {
         self.require("fmi2GetBoolean", GET_MODES)?;
         for (&r, v) in vrs.iter().zip(values.iter_mut()) {
-            if r != vr::COMPLIANCE && r != vr::SPIN_PEAK {
-                let e = FmuError::error(format!(
-                    "fmi2GetBoolean: value reference {r} is not a Boolean variable of this FMU"
-                ));
-                return Err(self.fail(e));
-            }
-            *v = if r == vr::SPIN_PEAK {
-                self.s.spin_peak
-            } else {
-                self.s.compliance
+            *v = match r {
+                vr::SPIN_PEAK => self.s.spin_peak,
+                vr::COMPLIANCE => self.s.compliance,
+                vr::RHEOLOGY_MAP => self.s.map,
+                _ => {
+                    let e = FmuError::error(format!(
+                        "fmi2GetBoolean: value reference {r} is not a Boolean variable of this FMU"
+                    ));
+                    return Err(self.fail(e));
+                }
             };
         }
         Ok(Status::Ok)
@@ -874,18 +899,18 @@ impl CoSimulation for TractionFmu {
 
     fn set_boolean(&mut self, vrs: &[u32], values: &[bool]) -> FmuResult {
         for (&r, &x) in vrs.iter().zip(values) {
-            if r != vr::COMPLIANCE && r != vr::SPIN_PEAK {
+            if ![vr::COMPLIANCE, vr::SPIN_PEAK, vr::RHEOLOGY_MAP].contains(&r) {
                 return Err(self.fail(FmuError::error(format!(
                     "fmi2SetBoolean: value reference {r} is not a Boolean variable of this FMU"
                 ))));
             }
             self.require("fmi2SetBoolean of a fixed parameter", SETTABLE_PARAM_MODES)?;
-            if r == vr::SPIN_PEAK {
-                self.s.spin_peak = x;
-            } else {
-                self.s.compliance = x;
+            match r {
+                vr::SPIN_PEAK => self.s.spin_peak = x,
+                vr::RHEOLOGY_MAP => self.s.map = x,
+                _ => self.s.compliance = x,
             }
-            self.contact = None;
+            self.drop_contact();
             self.s.dirty = true;
         }
         Ok(Status::Ok)
@@ -938,7 +963,7 @@ impl CoSimulation for TractionFmu {
         )?;
         self.s = state.clone();
         self.mode = state.mode;
-        self.contact = None;
+        self.drop_contact();
         Ok(Status::Ok)
     }
 
@@ -1257,10 +1282,12 @@ mod tests {
         traction_contact::Fluid::constant(35.0, 0.075).unwrap()
     }
 
+    /// The FMU's default options (rheology_map on, tolerance 1e-4).
     fn options(model: traction_contact::Model) -> traction_contact::Options {
         traction_contact::Options {
             model,
             rolling_speed_floor: 0.01,
+            map: true,
             ..traction_contact::Options::default()
         }
     }

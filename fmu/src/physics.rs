@@ -142,6 +142,10 @@ pub struct Parameters {
     pub compliance: bool,
     /// Rolling-speed regularisation U_reg, m/s (in [1e-9, 1]).
     pub u_reg: f64,
+    /// Absolute accuracy of J4, J5, J6 of the rheology, in [1e-6, 1e-2].
+    pub tolerance: f64,
+    /// Interpolation map of the J+T model (traction-contact `Options::map`).
+    pub map: bool,
 }
 
 /// One operating state of the contact (SI units).
@@ -285,6 +289,16 @@ pub struct Contact {
 }
 
 impl Contact {
+    /// Move the contact's rheology map out (to keep it across a rebuild).
+    pub fn take_map(&self) -> Option<traction_contact::Map> {
+        self.contact.take_map()
+    }
+
+    /// Adopt the map of a previous contact when k and the tolerance match.
+    pub fn adopt_map(&self, map: traction_contact::Map) -> bool {
+        self.contact.adopt_map(map)
+    }
+
     /// Validates the parameters and builds the traction-contact model.
     ///
     /// # Errors
@@ -349,9 +363,16 @@ impl Contact {
                     p.z0,
                     "sinh reference stress Z0 = tau0/tau_bar, > 0 (inf = linear Maxwell fluid)",
                 )?;
-                Model::Viscoelastic {
-                    deborah: p.deborah,
-                    z0: p.z0,
+                if p.deborah == f64::INFINITY {
+                    // D = ∞ is the elastic/plastic model exactly (the
+                    // rheology crate returns it); naming it so lets
+                    // rheology_map apply to it as well.
+                    Model::ElasticPlastic
+                } else {
+                    Model::Viscoelastic {
+                        deborah: p.deborah,
+                        z0: p.z0,
+                    }
                 }
             }
         };
@@ -370,10 +391,20 @@ impl Contact {
         } else {
             Compliance::Off
         };
+        check(
+            "rheology_tolerance",
+            p.tolerance,
+            (1e-6..=1e-2).contains(&p.tolerance),
+            "an absolute accuracy of J4, J5, J6 in [1e-6, 1e-2]",
+        )?;
+        let accuracy = traction_contact::Accuracy::new(p.tolerance)
+            .map_err(|e| PhysicsError::Contact(e.into()))?;
         let options = Options {
             model,
+            accuracy,
             compliance,
             rolling_speed_floor: p.u_reg,
+            map: p.map,
             ..Options::default()
         };
         let contact = TractionContact::new(&b1, &b2, fluid, options)?;
@@ -494,6 +525,8 @@ mod tests {
             mu_spin_user: 0.075,
             compliance: false,
             u_reg: 0.01,
+            tolerance: 1e-4,
+            map: true,
         }
     }
 

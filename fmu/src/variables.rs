@@ -376,6 +376,7 @@ pub mod vr {
     pub const DEBORAH: u32 = 16;
     pub const Z0: u32 = 17;
     pub const MU_SPIN_USER: u32 = 18;
+    pub const RHEOLOGY_TOLERANCE: u32 = 19;
     // Real inputs 100..
     pub const LOAD: u32 = 100;
     pub const OMEGA1: u32 = 101;
@@ -414,11 +415,12 @@ pub mod vr {
     pub const COMPLIANCE: u32 = 304;
     pub const ENVELOPE: u32 = 305;
     pub const SPIN_PEAK: u32 = 306;
+    pub const RHEOLOGY_MAP: u32 = 307;
     pub const REGIME: u32 = 310;
 }
 
 /// Number of Real parameters (VR 1..=N_REAL_PARAMS).
-pub const N_REAL_PARAMS: usize = 18;
+pub const N_REAL_PARAMS: usize = 19;
 /// Number of Real inputs (VR 100..).
 pub const N_INPUTS: usize = 7;
 /// Number of Real outputs (VR 200..=218 and 221..=227).
@@ -567,6 +569,15 @@ pub const VARIABLES: &[Variable] = &[
         1e-6,
         0.999,
         "Spin-peak traction coefficient mu_s, used when fluid = user and use_spin_peak = true: forces = mu_s N J, the J groups keep mu_user (report App. VI, J5*MS); valid range (0, 1)",
+    ),
+    par_bounded(
+        "rheology_tolerance",
+        vr::RHEOLOGY_TOLERANCE,
+        "Dimensionless",
+        1e-4,
+        1e-6,
+        1e-2,
+        "Absolute accuracy of the J+T solution in J4, J5, J6 (all rheology models; with rheology_map the interpolation is checked to it too); valid range [1e-6, 1e-2]",
     ),
     input(
         "normal_load",
@@ -875,6 +886,15 @@ pub const VARIABLES: &[Variable] = &[
         variability: Variability::Fixed,
         kind: Kind::Boolean { start: Some(false) },
         description: "Scale the forces by the spin-peak traction coefficient mu_s instead of mu (the J groups keep mu): fluid = user: mu_spin_user; report fluids: their spin-peak correlation mu_s(P0, U, inlet temperature, k, |Z|) (Appendix III-E, III-F)",
+        depends: Depends::None,
+    },
+    Variable {
+        name: "rheology_map",
+        vr: vr::RHEOLOGY_MAP,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        kind: Kind::Boolean { start: Some(true) },
+        description: "Evaluate the elastic/plastic J+T model (and the rigid/plastic one of the regime) through an interpolation map built lazily per instance: every map cell is checked against the direct solution to rheology_tolerance/4 before use and refined where the model is not smooth; ~1 us per step once a region of operating states has been visited, up to tens of ms when a new region is first entered; results depend only on the inputs. Used when rheology_model = elastic/plastic, rheology_tolerance >= 1e-4 and (for the elastic/plastic part) compliance_correction = false; false: the strips are integrated at every step (10-700 us with spin)",
         depends: Depends::None,
     },
     Variable {

@@ -125,6 +125,11 @@ fn default_parameters() -> traction_fmu::physics::Parameters {
         mu_spin_user: s("mu_spin_user"),
         compliance: false,
         u_reg: s("rolling_speed_regularisation"),
+        tolerance: s("rheology_tolerance"),
+        map: VARIABLES
+            .iter()
+            .find(|v| v.name == "rheology_map")
+            .is_some_and(|v| matches!(v.kind, Kind::Boolean { start: Some(true) })),
     }
 }
 

@@ -123,6 +123,30 @@ fn output_vrs() -> Vec<u32> {
 
 #[test]
 fn hundred_thousand_random_steps_through_the_c_abi() {
+    // rheology_map off: every step integrates the strips (random states would
+    // make the map build a new cell at nearly every step).
+    let (steps, calls, n_err, n_ok_outputs) = fuzz(0x9e37_79b9_7f4a_7c15, 100_000, false);
+    eprintln!(
+        "{steps} steps, {calls} calls, {n_err} errors (all logged), {n_ok_outputs} finite output reads"
+    );
+}
+
+#[test]
+fn random_steps_with_the_rheology_map() {
+    // rheology_map on (its default): inputs and parameters drawn from small
+    // pools (specials included), the same state machine and checks. The
+    // states still hardly recur (8 values per variable), so nearly every
+    // step with spin builds map cells (milliseconds each): 3000 steps.
+    let (steps, calls, n_err, n_ok_outputs) = fuzz(0x2545_f491_4f6c_dd1d, 3_000, true);
+    eprintln!(
+        "map: {steps} steps, {calls} calls, {n_err} errors (all logged), {n_ok_outputs} finite output reads"
+    );
+}
+
+/// Random call sequences from the state machine with random values; with
+/// `map` the rheology map is on and values come from small pools. Returns
+/// (steps, calls, errors, finite output reads).
+fn fuzz(seed: u64, n_steps: usize, map: bool) -> (usize, usize, usize, usize) {
     let mut sink = Box::new(Sink::default());
     let cb = callbacks(&mut sink);
     let name = CString::new("fuzz").unwrap();
@@ -161,13 +185,33 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
         (vr::Z0, 1.0),
         (vr::MU_SPIN_USER, 0.2),
     ];
-    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut rng = Rng(seed);
+    let set_map = |c| {
+        let x = Fmi2Boolean::from(map);
+        // SAFETY: valid instance and pointers.
+        assert_eq!(
+            unsafe { fmi2SetBoolean(c, &vr::RHEOLOGY_MAP, 1, &x) },
+            FMI2_OK
+        );
+    };
+    set_map(c);
+    // With the map: each value from a pool of 8 per variable (including the
+    // specials) so that operating states recur.
+    let pooled = |rng: &mut Rng, scale: f64, special: bool| -> f64 {
+        let i = rng.below(8);
+        let u = [0.05, 0.2, 0.45, 0.7, 0.95, 0.1, 0.6, 0.85][i as usize];
+        if special && i < 3 {
+            [f64::NAN, 0.0, -1e-300][i as usize]
+        } else {
+            scale * (2.0 * u - 0.5)
+        }
+    };
     let mut s = S::Instantiated;
     let mut saved: Fmi2FmuState = std::ptr::null_mut();
     let (mut steps, mut t) = (0usize, 0.0f64);
     let (mut n_err, mut n_ok_outputs) = (0usize, 0usize);
     let mut calls = 0usize;
-    while steps < 100_000 {
+    while steps < n_steps {
         calls += 1;
         let before = (sink.messages, sink.errors);
         let op = rng.below(100);
@@ -177,7 +221,10 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
                 (S::Instantiated, 0..=9) => fmi2SetupExperiment(c, 0, 0.0, 0.0, 1, 1e9),
                 (S::Instantiated, 10..=29) | (S::Init, 0..=19) => {
                     let (r, scale) = params[rng.below(params.len() as u64) as usize];
-                    let x = if rng.below(3) == 0 {
+                    let x = if map {
+                        let special = rng.below(3) == 0;
+                        pooled(&mut rng, scale, special).abs() + 1e-3
+                    } else if rng.below(3) == 0 {
                         rng.value(scale)
                     } else {
                         scale * rng.unit() + 1e-3
@@ -202,7 +249,10 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
                 (S::Init, 30..=89) => fmi2ExitInitializationMode(c),
                 (S::Step, 0..=29) | (S::Instantiated | S::Init, 80..=99) => {
                     let (r, scale) = inputs[rng.below(inputs.len() as u64) as usize];
-                    let x = if rng.below(5) == 0 {
+                    let x = if map {
+                        let special = rng.below(5) == 0;
+                        pooled(&mut rng, scale, special)
+                    } else if rng.below(5) == 0 {
                         rng.value(scale)
                     } else {
                         scale * (2.0 * rng.unit() - 0.5)
@@ -288,6 +338,7 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
             (_, S::Step, 97) | (_, S::Error, 30..=39) => S::Terminated,
             (_, _, 98) | (_, S::Error | S::Terminated, 40..=69) => {
                 t = 0.0;
+                set_map(c);
                 S::Instantiated
             }
             (_, S::Step | S::Error | S::Terminated, 94..=96) => {
@@ -309,6 +360,7 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
         if s == S::Error && rng.below(2) == 0 {
             // Recover as a master would: reset.
             assert_eq!(fmi2Reset(c), FMI2_OK);
+            set_map(c);
             s = S::Instantiated;
             t = 0.0;
         }
@@ -320,12 +372,10 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
         fmi2FreeInstance(std::ptr::null_mut());
     }
     assert!(
-        n_err > 100 && n_ok_outputs > 1000,
+        n_err > n_steps / 1000 && n_ok_outputs > n_steps / 100,
         "too few errors ({n_err}) or outputs ({n_ok_outputs}) exercised"
     );
-    eprintln!(
-        "{steps} steps, {calls} calls, {n_err} errors (all logged), {n_ok_outputs} finite output reads"
-    );
+    (steps, calls, n_err, n_ok_outputs)
 }
 
 #[test]
