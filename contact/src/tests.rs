@@ -418,6 +418,23 @@ fn interpolation_map_option() {
     assert_eq!(copy.map_stats(), mapped.map_stats());
     let st = state(1500.0, 20.0, 0.011, 0.01, 40.0);
     assert_eq!(copy.evaluate(&st).unwrap(), mapped.evaluate(&st).unwrap());
+    // The map moves to a rebuilt contact with the same k and accuracy
+    // (another load or fluid), not to one with another accuracy.
+    let built = mapped.map_stats().unwrap();
+    let m = mapped.take_map().unwrap();
+    assert!(mapped.map_stats().is_none());
+    let rebuilt = contact(
+        hs_k5(),
+        Fluid::constant(50.0, 0.09).unwrap(),
+        Options {
+            accuracy: acc,
+            map: true,
+            ..Options::default()
+        },
+    );
+    assert!(rebuilt.adopt_map(m.clone()));
+    assert_eq!(rebuilt.map_stats(), Some(built));
+    assert!(!direct.adopt_map(m));
     // Compliance on: gy = m_y/m_x ≠ 1, the map does not apply.
     let compliant = |map| Options {
         accuracy: acc,
