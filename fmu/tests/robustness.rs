@@ -146,6 +146,7 @@ fn random_steps_with_the_rheology_map() {
 /// Random call sequences from the state machine with random values; with
 /// `map` the rheology map is on and values come from small pools. Returns
 /// (steps, calls, errors, finite output reads).
+#[allow(clippy::unwrap_used)]
 fn fuzz(seed: u64, n_steps: usize, map: bool) -> (usize, usize, usize, usize) {
     let mut sink = Box::new(Sink::default());
     let cb = callbacks(&mut sink);
