@@ -219,17 +219,22 @@ impl Map {
         self.rigid_cells.clear();
     }
 
-    /// Evaluate J4..J7 at (J1, J2, J3): interpolated in an accepted cell,
-    /// directly otherwise. Errors: a non-finite J (named).
-    pub fn evaluate(&mut self, j1: f64, j2: f64, j3: f64) -> Result<Outputs, RheologyError> {
-        let inp = Inputs {
+    /// The rheology inputs at (J1, J2, J3) with this map's k, ΔX, gy.
+    fn inputs(&self, j1: f64, j2: f64, j3: f64) -> Inputs {
+        Inputs {
             k: self.k,
             j1,
             j2,
             j3,
             dx: self.dx,
             gy: self.gy,
-        };
+        }
+    }
+
+    /// Evaluate J4..J7 at (J1, J2, J3): interpolated in an accepted cell,
+    /// directly otherwise. Errors: a non-finite J (named).
+    pub fn evaluate(&mut self, j1: f64, j2: f64, j3: f64) -> Result<Outputs, RheologyError> {
+        let inp = self.inputs(j1, j2, j3);
         inp.validate()?;
         if (j3 == 0.0 && self.gy == 1.0) || (j1 == 0.0 && j2 == 0.0 && j3 == 0.0) {
             self.stats.closed_form += 1;
@@ -262,14 +267,7 @@ impl Map {
                 .map(|vals| interpolate(vals, &wi, &wj, &wl))
             {
                 self.stats.interpolated += 1;
-                let (j4, j5, j6) = (s[0] * e[0], s[1] * e[1], s[2] * e[2]);
-                return Ok(Outputs {
-                    j4,
-                    j5,
-                    j6,
-                    // The model only dissipates; interpolation must not make J7 < 0.
-                    j7: (j1 * j4 + j2 * j5 + j3 * j6).max(0.0),
-                });
+                return Ok(unfold(e, s, [j1, j2, j3]));
             }
         }
         self.stats.direct += 1;
@@ -289,14 +287,7 @@ impl Map {
 
     /// Direct evaluation at x with tolerance `tol`.
     fn exact(&self, x: [f64; 3], tol: f64) -> Result<[f64; 3], RheologyError> {
-        let inp = Inputs {
-            k: self.k,
-            j1: x[0] / self.s12,
-            j2: x[1] / self.s12,
-            j3: x[2] / self.s3,
-            dx: self.dx,
-            gy: self.gy,
-        };
+        let inp = self.inputs(x[0] / self.s12, x[1] / self.s12, x[2] / self.s3);
         let o = evaluate(&inp, Model::ElasticPlastic, Accuracy { tol })?;
         Ok([o.j4, o.j5, o.j6])
     }
@@ -335,6 +326,20 @@ impl Map {
         Ok([s[0] * v[0], s[1] * v[1], s[2] * v[2]])
     }
 
+    /// The cell check: the interpolant at the centre against the direct
+    /// value, accepted within ACCEPT·tol (counted in the stats).
+    fn check(&mut self, interpolated: [f64; 3], exact: [f64; 3]) -> bool {
+        self.stats.cells_checked += 1;
+        let err = (0..3)
+            .map(|n| (interpolated[n] - exact[n]).abs())
+            .fold(0.0, f64::max);
+        let accepted = err <= ACCEPT * self.tol;
+        if !accepted {
+            self.stats.cells_rejected += 1;
+        }
+        accepted
+    }
+
     /// The cell of level q with lower corner (i, j, l): its stencil if accepted.
     fn cell(&mut self, q: u32, c: [i32; 3]) -> Result<Option<&Stencil>, RheologyError> {
         let key = [q as i32, c[0], c[1], c[2]];
@@ -364,12 +369,7 @@ impl Map {
                 f64::from(c[2]) + 0.5,
             );
             let ex = self.exact(x, 0.1 * self.tol)?;
-            self.stats.cells_checked += 1;
-            let err = (0..3).map(|n| (e[n] - ex[n]).abs()).fold(0.0, f64::max);
-            let accepted = err <= ACCEPT * self.tol;
-            if !accepted {
-                self.stats.cells_rejected += 1;
-            }
+            let accepted = self.check(e, ex);
             self.cells.insert(key, accepted.then_some(vals));
         }
         Ok(self.cells.get(&key).and_then(|v| v.as_ref()))
@@ -382,14 +382,7 @@ impl Map {
     /// evaluated directly. Used for the regime classification of
     /// traction-contact.
     pub fn rigid_plastic(&mut self, j1: f64, j2: f64, j3: f64) -> Result<Outputs, RheologyError> {
-        let inp = Inputs {
-            k: self.k,
-            j1,
-            j2,
-            j3,
-            dx: self.dx,
-            gy: self.gy,
-        };
+        let inp = self.inputs(j1, j2, j3);
         inp.validate()?;
         if j3 == 0.0 {
             self.stats.rigid_direct += 1;
@@ -412,13 +405,7 @@ impl Map {
                 .map(|vals| interpolate2(vals, &wj, &wl))
             {
                 self.stats.rigid_interpolated += 1;
-                let (j4, j5, j6) = (s[0] * e[0], s[1] * e[1], s[2] * e[2]);
-                return Ok(Outputs {
-                    j4,
-                    j5,
-                    j6,
-                    j7: (j1 * j4 + j2 * j5 + j3 * j6).max(0.0),
-                });
+                return Ok(unfold(e, s, [j1, j2, j3]));
             }
         }
         self.stats.rigid_direct += 1;
@@ -449,14 +436,7 @@ impl Map {
 
     /// Direct rigid/plastic evaluation in direction x at tol/10.
     fn rigid_exact(&self, x: [f64; 3]) -> Result<[f64; 3], RheologyError> {
-        let inp = Inputs {
-            k: self.k,
-            j1: x[0] / self.s12,
-            j2: x[1] / self.s12,
-            j3: x[2] / self.s3,
-            dx: self.dx,
-            gy: self.gy,
-        };
+        let inp = self.inputs(x[0] / self.s12, x[1] / self.s12, x[2] / self.s3);
         let o = crate::rigid_plastic(
             &inp,
             Accuracy {
@@ -486,12 +466,7 @@ impl Map {
             let e = interpolate2(&vals, &w, &w);
             let x = Self::point(q, 1.0, f64::from(c[0]) + 0.5, f64::from(c[1]) + 0.5);
             let ex = self.rigid_exact(x)?;
-            self.stats.cells_checked += 1;
-            let err = (0..3).map(|n| (e[n] - ex[n]).abs()).fold(0.0, f64::max);
-            let accepted = err <= ACCEPT * self.tol;
-            if !accepted {
-                self.stats.cells_rejected += 1;
-            }
+            let accepted = self.check(e, ex);
             self.rigid_cells.insert(key, accepted.then_some(vals));
         }
         Ok(self.rigid_cells.get(&key).and_then(|v| v.as_ref()))
@@ -525,6 +500,19 @@ fn angles(q: u32, j: i32, l: i32) -> (i32, i32, [f64; 3]) {
         ll = 0;
     }
     (jj, ll, s)
+}
+
+/// Outputs from folded interpolated forces `e`, the fold's signs `s` and
+/// the inputs j; J7 ≥ 0 (the model only dissipates; interpolation must not
+/// make it negative).
+fn unfold(e: [f64; 3], s: [f64; 3], j: [f64; 3]) -> Outputs {
+    let (j4, j5, j6) = (s[0] * e[0], s[1] * e[1], s[2] * e[2]);
+    Outputs {
+        j4,
+        j5,
+        j6,
+        j7: (j[0] * j4 + j[1] * j5 + j[2] * j6).max(0.0),
+    }
 }
 
 /// Fold x onto x1 ≥ 0, x2 ≥ 0 with the model's symmetries; the signs to
