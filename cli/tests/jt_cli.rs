@@ -91,3 +91,42 @@ fn stiffness_ratio_column() {
         "{err}"
     );
 }
+
+#[test]
+fn map_option_agrees_with_direct_evaluation() {
+    // --map: 120 rows of a slip sweep at two spins and two k's; every row
+    // within tol = 1e-3 of the direct evaluation at 1e-5 (the map's contract,
+    // traction-rheology tests/map.rs); --map with another model or a tol
+    // outside [1e-4, 1e-2] is a usage error.
+    let mut input = String::from("k,J1,J2,J3\n");
+    for n in 0..30 {
+        for (k, j3) in [(1.0, 2.0), (5.0, 25.8)] {
+            input += &format!("{k},{},0.3,{j3}\n", 0.1 * f64::from(n));
+            input += &format!("{k},{},-0.3,{}\n", -0.1 * f64::from(n), -j3);
+        }
+    }
+    let col = |out: &str| -> Vec<[f64; 3]> {
+        out.lines()
+            .skip(1)
+            .map(|l| {
+                let c: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+                [c[4], c[5], c[6]]
+            })
+            .collect()
+    };
+    let (ok, mapped, err) = run(&["jt", "--map", "--tol", "1e-3"], &input);
+    assert!(ok, "{err}");
+    let (ok, direct, err) = run(&["jt", "--tol", "1e-5"], &input);
+    assert!(ok, "{err}");
+    let (m, d) = (col(&mapped), col(&direct));
+    assert_eq!(m.len(), 120);
+    for (a, b) in m.iter().zip(&d) {
+        for i in 0..3 {
+            assert!((a[i] - b[i]).abs() <= 1e-3, "{a:?} vs {b:?}");
+        }
+    }
+    let (ok, _, err) = run(&["jt", "--map", "--model", "rigid-plastic"], &input);
+    assert!(!ok && err.contains("--map"), "{err}");
+    let (ok, _, err) = run(&["jt", "--map", "--tol", "1e-6"], &input);
+    assert!(!ok && err.contains("--map"), "{err}");
+}
