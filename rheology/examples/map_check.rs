@@ -1,5 +1,5 @@
 //! Accuracy and hit rate of `map::Map` on random points:
-//! `map_check K TOL N RLOG` (|x| log-uniform in [0.1, 10^(RLOG−1)], reference
+//! `map_check K TOL N RLOG [DX GY]` (|x| log-uniform in [0.1, 10^(RLOG−1)], reference
 //! `evaluate` at TOL/100). Prints the worst error, the error distribution and
 //! the map's counters.
 #![allow(missing_docs, clippy::unwrap_used)]
@@ -12,7 +12,11 @@ fn main() {
         .map(|s| s.parse().unwrap())
         .collect();
     let (k, tol, n, rlog) = (a[0], a[1], a[2] as usize, a[3]);
-    let mut map = Map::new(k, 0.0, 1.0, Accuracy::new(tol).unwrap()).unwrap();
+    let (dx, gy) = (
+        a.get(4).copied().unwrap_or(0.0),
+        a.get(5).copied().unwrap_or(1.0),
+    );
+    let mut map = Map::new(k, dx, gy, Accuracy::new(tol).unwrap()).unwrap();
     let mut seed = 0x1234_5678_9abc_def1u64 ^ (k * 1e6) as u64;
     let mut rnd = || {
         seed ^= seed << 13;
@@ -31,12 +35,10 @@ fn main() {
         let q = (1.0 - z * z).sqrt();
         let (j1, j2, j3) = (r * q * p.cos() / s12, r * q * p.sin() / s12, r * z / s3);
         let m = map.evaluate(j1, j2, j3).unwrap();
-        let o = evaluate(
-            &Inputs::new(k, j1, j2, j3).unwrap(),
-            Model::ElasticPlastic,
-            acc,
-        )
-        .unwrap();
+        let inp = Inputs::with_offset(k, j1, j2, j3, dx)
+            .and_then(|i| i.with_stiffness_ratio(gy))
+            .unwrap();
+        let o = evaluate(&inp, Model::ElasticPlastic, acc).unwrap();
         let err = (m.j4 - o.j4)
             .abs()
             .max((m.j5 - o.j5).abs())
@@ -51,7 +53,7 @@ fn main() {
     }
     let s = map.stats();
     println!(
-        "k={k} tol={tol:.0e}: worst {:.2}·tol; err/tol in [0,1/8),..,[1/2,inf): {hist:?}; direct {:.1}% ({} of {}); nodes {}, cells {} ({} rejected); {:.1} s",
+        "k={k} dX={dx} gy={gy} tol={tol:.0e}: worst {:.2}·tol; err/tol in [0,1/8),..,[1/2,inf): {hist:?}; direct {:.1}% ({} of {}); nodes {}, cells {} ({} rejected); {:.1} s",
         worst / tol,
         100.0 * s.direct as f64 / (s.direct + s.interpolated) as f64,
         s.direct,

@@ -135,3 +135,60 @@ fn limits_and_dissipation() {
     let b = ep(&Inputs::new(1.0, 1.5, 0.3, 2.0).unwrap(), 1e-4);
     assert_eq!(a, b);
 }
+
+#[test]
+fn large_j_with_anisotropy_meets_the_accuracy() {
+    // |J| in the hundreds with gy ≠ 1 (and ΔX ≠ 0): the stiff segments use
+    // the quasi-steady direction, which for gy ≠ 1 must solve dθ/ds = α'
+    // of the anisotropic law (session 3: the isotropic lag formula was used,
+    // off by 9e-4 in J5 at tol = 1e-4 for the first case, found by the map's
+    // random check). Against the same integrator at 1e-7 (the independent
+    // grid scheme at 200/400/800 cells, extrapolated, agrees to ≈ 1e-5 on
+    // the first and fifth case): ≤ tol at 1e-3 and 1e-4.
+    // Also two cases where the RK4 sub-steps ended too early for gy ≠ 1 (the
+    // κ bound overestimates the relaxation by up to gy or 1/gy, so the
+    // quasi-steady branch was used where the flow is not quasi-steady): 20·tol
+    // at 1e-3 (gy = 8.7, J ≈ 10) and 1.65·tol at 1e-4 (gy = 0.1, k = 0.05),
+    // and 60 pseudo-random cases: k 0.05 … 20, gy 0.1 … 10, |ΔX| ≤ 0.3,
+    // |J| up to 10³ (an offline scan of 1500 such cases to 10⁴: worst
+    // 0.46·tol at 1e-3, 0.62·tol at 1e-4).
+    let mut cases = vec![
+        (0.5, -224.45, -11.92, -147.61, -0.2, 3.0),
+        (2.0, 120.0, 40.0, 300.0, 0.0, 0.3),
+        (1.0, -60.0, 150.0, 90.0, 0.3, 5.0),
+        (5.0, 30.0, -80.0, -400.0, 0.0, 0.5),
+        (0.251, -5.36, -10.41, 13.10, 0.258, 8.748),
+        (0.051, 297.96, 74.10, 248.39, 0.109, 0.1),
+    ];
+    let mut seed = 0x00c0_ffee_1234_5678u64;
+    let mut rnd = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..60 {
+        let k = 10f64.powf(-1.3 + 2.6 * rnd());
+        let gy = 10f64.powf(-1.0 + 2.0 * rnd());
+        let dx = 0.6 * rnd() - 0.3;
+        let r = 10f64.powf(3.0 * rnd());
+        let (a, b, c) = (2.0 * rnd() - 1.0, 2.0 * rnd() - 1.0, 2.0 * rnd() - 1.0);
+        cases.push((k, r * a, r * b, r * c, dx, gy));
+    }
+    for &(k, j1, j2, j3, dx, gy) in &cases {
+        let i = Inputs::with_offset(k, j1, j2, j3, dx)
+            .unwrap()
+            .with_stiffness_ratio(gy)
+            .unwrap();
+        let r = ep(&i, 1e-7);
+        for tol in [1e-3, 1e-4] {
+            let o = ep(&i, tol);
+            let d = (o.j4 - r.j4)
+                .abs()
+                .max((o.j5 - r.j5).abs())
+                .max((o.j6 - r.j6).abs());
+            println!("k={k} J=({j1},{j2},{j3}) dX={dx} gy={gy} tol={tol:.0e}: {d:.1e}");
+            assert!(d <= tol, "{o:?} vs {r:?}");
+        }
+    }
+}
