@@ -33,8 +33,12 @@
 //!   against [`crate::evaluate`] at tol/100 (example `map_check`):
 //!   tol = 1e-3, k = 0.1, 1, 5, 20, 1000 points each: worst error 0.47·tol,
 //!   none evaluated directly; tol = 1e-4, 600 points each: worst 0.53·tol,
-//!   0.2 % evaluated directly. rheology/tests/map.rs checks ≤ tol on 600
-//!   random points (k = 0.1 … 10), with ΔX and gy ≠ 1, and along a curve.
+//!   0.2 % evaluated directly; further k = 0.05, 0.3, 2, 10, 50: ≤ 0.39·tol
+//!   (1e-3) and ≤ 0.40·tol (1e-4); with ΔX and gy ≠ 1 (k = 1, ΔX = 0.3;
+//!   k = 3, gy = 0.5; k = 0.5, ΔX = −0.2, gy = 3; 500 points each at 1e-3,
+//!   and k = 1, ΔX = 0.3, gy = 2, 400 at 1e-4): ≤ 0.25·tol.
+//!   rheology/tests/map.rs checks ≤ tol on 600 random points (k = 0.1 …
+//!   10), with ΔX and gy ≠ 1, and along a curve.
 //! * **Rigid/plastic.** [`Map::rigid_plastic`] maps the rigid/plastic
 //!   solution the same way over the direction (θ, φ) alone (it does not
 //!   depend on |J|): bicubic, checked and refined alike.
