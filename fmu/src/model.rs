@@ -1338,6 +1338,51 @@ mod tests {
     }
 
     #[test]
+    fn rheology_map_and_tolerance_parameters() {
+        // rheology_map off: traction-contact without the map, bit-identical;
+        // on (the default): within 2·tol = 2e-4 of it in J4..J6 (both are
+        // within tol of the converged solution; spin 20 rad/s, side slip);
+        // rheology_tolerance
+        // reaches the contact (1e-3: same as traction-contact at 1e-3); out
+        // of [1e-6, 1e-2] it is refused with a message naming it.
+        let (b1, b2) = default_bodies(2.07e11, 0.3);
+        let ep = traction_contact::Model::ElasticPlastic;
+        let contact = |map: bool, tol: f64| {
+            traction_contact::TractionContact::new(
+                &b1,
+                &b2,
+                user_fluid(),
+                traction_contact::Options {
+                    map,
+                    accuracy: traction_contact::Accuracy::new(tol).unwrap(),
+                    ..options(ep)
+                },
+            )
+            .unwrap()
+        };
+        let (_, off) = run(&[], &[], &[(vr::RHEOLOGY_MAP, false)]).unwrap();
+        assert_matches(&off, &direct(&contact(false, 1e-4), &off));
+        let (_, on) = run(&[], &[], &[]).unwrap();
+        for n in 3..6 {
+            let (a, b) = (
+                on[out_index(vr::J1 + n).unwrap()],
+                off[out_index(vr::J1 + n).unwrap()],
+            );
+            assert!((a - b).abs() <= 2e-4, "J{}: {a} vs {b}", n + 1);
+        }
+        assert!(
+            on[out_index(vr::J1 + 2).unwrap()].abs() > 0.1,
+            "no spin: vacuous"
+        );
+        let (_, coarse) = run(&[(vr::RHEOLOGY_TOLERANCE, 1e-3)], &[], &[]).unwrap();
+        assert_matches(&coarse, &direct(&contact(true, 1e-3), &coarse));
+        for bad in [1e-8, 0.5] {
+            let e = run(&[(vr::RHEOLOGY_TOLERANCE, bad)], &[], &[]).unwrap_err();
+            assert!(e.message.contains("rheology_tolerance"), "{e}");
+        }
+    }
+
+    #[test]
     fn spin_peak_equals_traction_contact() {
         // User fluid: forces scaled by mu_spin_user, J groups by mu_user.
         let (_, o) = run(&[(vr::MU_SPIN_USER, 0.06)], &[], &[(vr::SPIN_PEAK, true)]).unwrap();
