@@ -918,16 +918,16 @@ pub(crate) fn contact_integral_adaptive_at(
     mut strip_fn: impl FnMut(&Strip) -> StripSums,
 ) -> (f64, f64, f64) {
     let mut total = [0.0; 4];
-    // (lo, hi, value, depth)
-    let mut stack: Vec<(f64, f64, [f64; 4], u32)> = Vec::with_capacity(32);
+    // (lo, hi, value, depth, weight)
+    let mut stack: Vec<(f64, f64, [f64; 4], u32, f64)> = Vec::with_capacity(32);
     for w in breaks.windows(2) {
         let (lo, hi) = (w[0], w[1]);
         if hi > lo {
             let v = panel_sums(sc, lo, hi, n, &mut strip_fn);
-            stack.push((lo, hi, v, 0));
+            stack.push((lo, hi, v, 0, 1.0));
         }
     }
-    while let Some((lo, hi, coarse, depth)) = stack.pop() {
+    while let Some((lo, hi, coarse, depth, weight)) = stack.pop() {
         let m = 0.5 * (lo + hi);
         let l = panel_sums(sc, lo, m, n, &mut strip_fn);
         let r = panel_sums(sc, m, hi, n, &mut strip_fn);
@@ -941,16 +941,38 @@ pub(crate) fn contact_integral_adaptive_at(
         let (e4, e5, e6) = to_j(sc, &d);
         let err = e4.abs().max(e5.abs()).max(e6.abs());
         let allowed = tol * (hi - lo) / PI;
-        if err <= allowed || depth >= max_depth || err.is_nan() {
-            for i in 0..4 {
-                total[i] += fine[i];
-            }
+        // Share of the refined value: 0 up to BLEND.0·allowed, 1 from
+        // BLEND.1·allowed on, a smooth step in between, so that the result is a
+        // continuous function of the inputs (no jump where a panel's
+        // decision flips).
+        let refine = if depth >= max_depth || err.is_nan() {
+            0.0
         } else {
-            stack.push((lo, m, l, depth + 1));
-            stack.push((m, hi, r, depth + 1));
+            smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
+        };
+        if refine < 1.0 {
+            let w = weight * (1.0 - refine);
+            for i in 0..4 {
+                total[i] += w * fine[i];
+            }
+        }
+        if refine > 0.0 {
+            stack.push((lo, m, l, depth + 1, weight * refine));
+            stack.push((m, hi, r, depth + 1, weight * refine));
         }
     }
     to_j(sc, &total)
+}
+
+/// Blend between a panel's value and its refinement: from BLEND.0 to BLEND.1
+/// times the allowed change (see `contact_integral_adaptive_at`).
+const BLEND: (f64, f64) = (1.0, 2.0);
+
+/// 0 for t ≤ 0, 1 for t ≥ 1, C¹ cubic in between.
+#[inline]
+fn smooth_step(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
 }
 
 /// Elastic/plastic (J4, J5, J6), adaptive in Y; s-step `s_step`, or
