@@ -4,9 +4,15 @@
 //! mapping, the rigid/plastic and viscoelastic limits, and dissipation.
 #![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
 
+use traction_rheology::reference::grid as grid_reference;
 use traction_rheology::{
-    Accuracy, Inputs, Model, Properties, closed, evaluate, grid_reference, rigid_plastic,
+    Accuracy, Inputs, Model, Outputs, Properties, RheologyError, closed, evaluate,
 };
+
+/// The rigid/plastic model through [`evaluate`].
+fn rigid_plastic(i: &Inputs, a: Accuracy) -> Result<Outputs, RheologyError> {
+    evaluate(i, Model::RigidPlastic, a)
+}
 
 fn inp(k: f64, j1: f64, j2: f64, j3: f64, gy: f64) -> Inputs {
     Inputs::new(k, j1, j2, j3)

@@ -4,11 +4,26 @@
 use std::f64::consts::PI;
 
 use proptest::prelude::*;
+use traction_rheology::reference::{elastic_plastic, grid as grid_reference};
 use traction_rheology::{
     Accuracy, Inputs, Limit, Model, Modulus, Outputs, Properties, Resolution, RheologyError,
-    closed, elastic_plastic, elastic_plastic_with, evaluate, grid_reference, rigid_plastic,
-    viscoelastic,
+    closed, evaluate,
 };
+
+/// The rigid/plastic model through [`evaluate`].
+fn rigid_plastic(i: &Inputs, a: Accuracy) -> Result<Outputs, RheologyError> {
+    evaluate(i, Model::RigidPlastic, a)
+}
+
+/// The viscoelastic model through [`evaluate`].
+fn viscoelastic(i: &Inputs, deborah: f64, z0: f64, a: Accuracy) -> Result<Outputs, RheologyError> {
+    evaluate(i, Model::Viscoelastic { deborah, z0 }, a)
+}
+
+/// A property variation through [`evaluate`].
+fn elastic_plastic_with(i: &Inputs, p: Properties, a: Accuracy) -> Result<Outputs, RheologyError> {
+    evaluate(i, Model::PropertyVariation(p), a)
+}
 
 fn inp(k: f64, j1: f64, j2: f64, j3: f64) -> Inputs {
     Inputs::new(k, j1, j2, j3).unwrap()
