@@ -393,12 +393,14 @@ impl Accuracy {
 /// Evaluate a model at the given accuracy.
 ///
 /// Every output is finite for finite inputs. The elastic/plastic model uses
-/// the closed form of App. V eq. 23 when J3 = 0 (exact; ΔX has no effect
-/// then), and the rigid/plastic solution when max|J| > [`J_RIGID`].
-/// Otherwise it integrates strips with adaptive panels in Y (4 Gauss points
-/// each) and the s-step [`Accuracy::s_step`], doubled on plastic segments
-/// that stay non-stiff (κ·h below the RK4 stability margin) at the doubled
-/// step.
+/// the closed forms of App. V eq. 23 and [`closed::combined_slip_torque`]
+/// when J3 = 0 and gy = 1 (exact; ΔX only moves the torque's reference
+/// point, adding ΔX·J5/√k), and the rigid/plastic solution when
+/// max|J| > [`J_RIGID`]. Otherwise it integrates strips with adaptive panels
+/// in Y (4 Gauss points each, refinement blended so that the outputs are
+/// continuous in the inputs) and the s-step [`Accuracy::s_step`], doubled on
+/// plastic segments that stay non-stiff (κ·h below the RK4 stability
+/// margin) at the doubled step.
 pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, RheologyError> {
     inp.validate()?;
     let (j4, j5, j6) = match model {

@@ -146,9 +146,8 @@ fn limits_and_dissipation() {
 fn large_j_with_anisotropy_meets_the_accuracy() {
     // |J| in the hundreds with gy ≠ 1 (and ΔX ≠ 0): the stiff segments use
     // the quasi-steady direction, which for gy ≠ 1 must solve dθ/ds = α'
-    // of the anisotropic law (session 3: the isotropic lag formula was used,
-    // off by 9e-4 in J5 at tol = 1e-4 for the first case, found by the map's
-    // random check). Against the same integrator at 1e-7 (the independent
+    // of the anisotropic law (the isotropic lag formula is off by 9e-4 in J5
+    // at tol = 1e-4 for the first case). Against the same integrator at 1e-7 (the independent
     // grid scheme at 200/400/800 cells, extrapolated, agrees to ≈ 1e-5 on
     // the first and fifth case): ≤ tol at 1e-3 and 1e-4.
     // Also two cases where the RK4 sub-steps ended too early for gy ≠ 1 (the

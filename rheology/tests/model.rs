@@ -455,8 +455,8 @@ fn rigid_plastic_matches_a_brute_force_reference() {
     // J4..J6 of Z = L·v/|v| by nested adaptive Simpson in (φ, s) (Y = sin φ,
     // X = c·sin s) to 1e-10 / 1e-12, against rigid_plastic at tol = 1e-6:
     // agreement 1e-6. Cases: moderate spin, the spin pole just inside the
-    // contact near the axis (k = 0.2 — here the solver of sessions 1–2, with
-    // uniform panels, was off by 1.6e-3 at tol = 1e-4 and 2e-4 at 1e-8),
+    // contact near the axis (k = 0.2 — here uniform panels are off by 1.6e-3
+    // at tol = 1e-4 and 2e-4 at 1e-8),
     // pole outside, side slip with the line vy = 0 leaving the ellipse, ΔX.
     use std::f64::consts::{FRAC_PI_2, PI};
     let cases: [(f64, f64, f64, f64, f64); 5] = [
