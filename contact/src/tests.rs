@@ -46,7 +46,10 @@ fn zero_spin_matches_the_closed_form_exactly() {
     // Same closed form, evaluated through the contact: round-off only (1e-12).
     assert!((r.fx / (0.089 * n * j4) - 1.0).abs() < 1e-12);
     assert!((r.fy / (0.089 * n * j5) - 1.0).abs() < 1e-12);
-    assert_eq!(r.mz, 0.0);
+    // The side force's aligning moment (closed::combined_slip_torque), 1e-12.
+    let ab = c.geometry().at_load(n).map(|h| (h.a * h.b).sqrt()).unwrap();
+    let j6 = closed::combined_slip_torque(k, j1, j2);
+    assert!((r.mz / (0.089 * n * ab * j6) - 1.0).abs() < 1e-12);
     assert_eq!(r.regime, Regime::ElasticWithoutSpin);
     // Small-slip limit: Fx/N → m ΔU/U (the definition of m), 1e-4 relative at ΔU/U = 1e-7.
     let r = c.evaluate(&state(n, u, 2e-6, 0.0, 0.0)).unwrap();
