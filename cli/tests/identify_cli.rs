@@ -313,12 +313,27 @@ fn appendix_i_csv(trace: &str) -> (String, traction_fluids::TracePoint) {
     (csv, p0.clone())
 }
 
+/// Fit m and μ on each of the eight Appendix I side-slip traces (no spin) and
+/// compare with the values the report reduced the same trace with (printed
+/// per trace) and with the fluid's correlation at the trace's conditions.
+///
+/// Measured (tol 1e-6): fitted/printed m 0.958..1.036, μ 0.973..1.009, each
+/// within 3 standard errors plus half a unit of the printed last digit (m
+/// is printed to 1, μ to 0.001): the report read m and μ off the same trace
+/// with the same zero-spin model, so only its reading (initial slope, peak)
+/// and rounding differ. The correlations (Appendix III, 16 terms) are
+/// compared within their own scatter: μ within 15 % (measured up to
+/// +11.7 %), m within 25 % (measured up to +19 %); Appendix III-A's printed
+/// standard deviation of the slope correlation is 10.7 %, so 19 % is a
+/// 2σ point, and μ's correlation scatters by up to 0.013 (III-C, III-D).
 #[test]
 fn appendix_i_traces_fitted() {
-    for trace in [
+    use traction_contact::EnvelopeRule;
+    let traces = [
         "79053101", "79012603", "79032904", "79031106", "79111904", "79113006", "79113004",
         "79110311",
-    ] {
+    ];
+    for trace in traces {
         let (csv, p) = appendix_i_csv(trace);
         let (ok, out, err) = run(
             &[
@@ -333,6 +348,114 @@ fn appendix_i_traces_fitted() {
             &csv,
         );
         assert!(ok, "{err}");
-        eprintln!("TRACE {trace} printed m {} mu {}\n{out}{err}", p.m, p.mu);
+        let fit = params(&out);
+        let (m, m_se) = value(&fit, "m");
+        let (mu, mu_se) = value(&fit, "mu");
+        assert!(
+            (m - p.m).abs() <= 3.0 * m_se + 0.5,
+            "{trace}: m {m} ± {m_se}, printed {}",
+            p.m
+        );
+        assert!(
+            (mu - p.mu).abs() <= 3.0 * mu_se + 0.0005,
+            "{trace}: μ {mu} ± {mu_se}, printed {}",
+            p.mu
+        );
+        // The correlation values at the trace's conditions.
+        let (b1, b2) = bodies(p.k, p.fz_n, p.p0_gpa * 1e9);
+        let fluid = if p.fluid.starts_with("Santotrac") {
+            Fluid::santotrac_50(EnvelopeRule::Extrapolate)
+        } else {
+            Fluid::tdf_88(EnvelopeRule::Extrapolate)
+        };
+        let c = TractionContact::new(&b1, &b2, fluid.unwrap(), Options::default()).unwrap();
+        let s = OperatingState::new(p.fz_n, p.speed_m_s, 0.0, 0.0, 0.0, p.temp_celsius).unwrap();
+        let e = c.evaluate(&s).unwrap();
+        eprintln!(
+            "{trace}: m {m:.2} ± {m_se:.2} (printed {}, correlation {:.2}), μ {mu:.4} ± {mu_se:.4} \
+             (printed {}, correlation {:.4})",
+            p.m, e.m_used, p.mu, e.mu_used
+        );
+        assert!(
+            (mu / e.mu_used - 1.0).abs() < 0.15,
+            "{trace}: μ {mu} vs correlation {}",
+            e.mu_used
+        );
+        assert!(
+            (m / e.m_used - 1.0).abs() < 0.25,
+            "{trace}: m {m} vs correlation {}",
+            e.m_used
+        );
     }
+}
+
+/// The rows of one Appendix VI spin trace, both rolling directions as one
+/// side-slip sweep at U > 0 (the report's J2 carries the sign, J3 > 0):
+/// exact k, P0 from the figure caption at 5000 N, ω from the printed
+/// ω√(ab)/U; the printed m, μ as the rows' m, mu (starting point).
+fn appendix_vi_csv(trace: &str, p0: f64, theta: f64) -> (String, [f64; 3]) {
+    let text = include_str!("../../fluids/data/appendix_vi_spin_traces.csv");
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
+    let rows: Vec<Vec<&str>> = lines
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|c| c[col("trace")] == trace)
+        .collect();
+    let num = |r: &Vec<&str>, n: &str| r[col(n)].parse::<f64>().unwrap();
+    let r0 = &rows[0];
+    let (k, m, mu, ms, u, spin) = (
+        num(r0, "k"),
+        num(r0, "m"),
+        num(r0, "mu"),
+        num(r0, "mu_spin"),
+        num(r0, "U"),
+        num(r0, "spin"),
+    );
+    let (b1, b2) = bodies(k, 5000.0, p0);
+    let g = traction_hertz::solve_load(&b1, &b2, 5000.0).unwrap();
+    let omega = spin * u / (g.a * g.b).sqrt();
+    let mut csv = format!("{HEADER},m,mu,fy_over_n\n");
+    for r in &rows {
+        csv.push_str(&format!(
+            "{},5000,{u},0,{},{omega},{theta},{m},{mu},{}\n",
+            body_cells(&b1, &b2),
+            num(r, "dV_U") * u,
+            num(r, "FyFz_exp")
+        ));
+    }
+    (csv, [m, mu, ms])
+}
+
+/// Trace 79072704 (k = 5, 80 m/s, 30° spin, J3 = 25.8): the report's
+/// spin-peak method keeps the zero-spin m, μ in the J groups and scales the
+/// forces by μ_s. Fitting μ_s alone must agree with the closed-form linear
+/// least-squares scale of the report's *printed* theory J5 to the measured
+/// Fy/Fz, μ_s* = Σ J5·F / Σ J5² (an independent method: the printed J5
+/// come from the report's program), within 5 %: our J5 differ from the
+/// printed ones by RMS 0.023 (Appendix VI reproduction) on |J5| ≈ 0.5.
+/// Measured: identify 0.0466 ± 0.0014, μ_s* 0.0456 (2.2 % apart); the report's spin-peak
+/// correlation value printed for the trace is 0.035 (its forces under-predict
+/// this trace).
+#[test]
+fn appendix_vi_spin_trace_fitted() {
+    let (csv, printed) = appendix_vi_csv("79072704", 1.45e9, 73.0);
+    let (ok, out, err) = run(&["identify", "--input", "-", "--fit", "mu_spin"], &csv);
+    assert!(ok, "{err}");
+    eprintln!("{out}{err}");
+    let (ms, se) = value(&params(&out), "mu_spin");
+    let text = include_str!("../../fluids/data/appendix_vi_spin_traces.csv");
+    let (mut num, mut den) = (0.0, 0.0);
+    for l in text.lines().filter(|l| l.starts_with("79072704,")) {
+        let c: Vec<f64> = l.split(',').filter_map(|v| v.parse().ok()).collect();
+        // numeric cells: trace id, k, m, mu, mu_spin, U, spin, J3, dV_U,
+        // FyFz_exp, J2, J5, J5_mu, J5_ms (direction is not numeric).
+        let (f, j5) = (c[9], c[11]);
+        num += j5 * f;
+        den += j5 * j5;
+    }
+    let closed = num / den;
+    eprintln!("mu_spin {ms} ± {se}; closed form on printed J5 {closed}; printed {printed:?}");
+    assert!((ms / closed - 1.0).abs() < 0.05, "{ms} vs {closed}");
+    assert!(se < 0.1 * ms);
 }
