@@ -459,3 +459,51 @@ fn appendix_vi_spin_trace_fitted() {
     assert!((ms / closed - 1.0).abs() < 0.05, "{ms} vs {closed}");
     assert!(se < 0.1 * ms);
 }
+
+#[test]
+fn plot_and_residual_files_are_written() {
+    let csv = synthetic_slip_curve(0.01, 7);
+    let dir = std::env::temp_dir().join(format!("traction-identify-{}", std::process::id()));
+    let res = std::env::temp_dir().join(format!(
+        "traction-identify-residuals-{}.csv",
+        std::process::id()
+    ));
+    let (ok, _out, err) = run(
+        &[
+            "identify",
+            "--input",
+            "-",
+            "--fit",
+            "m,mu",
+            "--plot",
+            dir.to_str().unwrap(),
+            "--residuals",
+            res.to_str().unwrap(),
+        ],
+        &csv,
+    );
+    assert!(ok, "{err}");
+    for f in [
+        "identify-fit.png",
+        "identify-residuals.png",
+        "identify-residuals.svg",
+    ] {
+        assert!(std::fs::metadata(dir.join(f)).unwrap().len() > 1000, "{f}");
+    }
+    let text = std::fs::read_to_string(&res).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = |n: &str| head.iter().position(|h| *h == n).unwrap();
+    for l in lines {
+        let c: Vec<&str> = l.split(',').collect();
+        let (model, measured, r) = (
+            c[at("fx_over_n_model")].parse::<f64>().unwrap(),
+            c[at("fx_over_n")].parse::<f64>().unwrap(),
+            c[at("fx_residual")].parse::<f64>().unwrap(),
+        );
+        assert_eq!(r, model - measured);
+        assert_eq!(c[at("fy_residual")], "");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+    std::fs::remove_file(&res).unwrap();
+}
