@@ -103,31 +103,31 @@ pub enum Difference {
     Central,
 }
 
-/// Options of [`levenberg_marquardt`] (defaults in brackets).
+/// Options of [`levenberg_marquardt`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
-    /// Largest number of iterations (Jacobians) [200].
+    /// Largest number of iterations (Jacobians) (default 200).
     pub max_iterations: usize,
-    /// Largest number of residual evaluations, Jacobians included [10 000].
+    /// Largest number of residual evaluations, Jacobians included (default 10 000).
     pub max_evaluations: usize,
     /// Relative reduction of the cost below which an accepted step ends the
-    /// fit [1e-12], in [0, 1).
+    /// fit (default 1e-12), in [0, 1).
     pub ftol: f64,
-    /// Relative step size below which the fit ends [1e-10], in [0, 1).
+    /// Relative step size below which the fit ends (default 1e-10), in [0, 1).
     pub xtol: f64,
     /// Cosine between the residual and each Jacobian column below which the
-    /// fit ends [1e-10], in [0, 1).
+    /// fit ends (default 1e-10), in [0, 1).
     pub gtol: f64,
-    /// Finite-difference scheme [central].
+    /// Finite-difference scheme (default central).
     pub difference: Difference,
-    /// Finite-difference step relative to max(|x|, scale) [1e-6], in
+    /// Finite-difference step relative to max(|x|, scale) (default 1e-6), in
     /// [1e-12, 0.1]. Use about ε^(1/3) (central) or ε^(1/2) (forward) of the
     /// residuals' relative accuracy ε.
     pub relative_step: f64,
-    /// Initial damping λ₀, relative to Marquardt's scaling D [1e-3], > 0.
+    /// Initial damping λ₀, relative to Marquardt's scaling D (default 1e-3), > 0.
     pub initial_damping: f64,
     /// Singular values of the column-scaled Jacobian at or below this
-    /// fraction of the largest count as zero (rank deficiency) [1e-10],
+    /// fraction of the largest count as zero (rank deficiency) (default 1e-10),
     /// in [0, 1).
     pub rank_tolerance: f64,
 }
