@@ -425,7 +425,7 @@ pub fn diagnose(names: &[&str], scales: &[f64], fit: &Fit) -> Vec<String> {
             if se[j] > MAX_RELATIVE_STDERR * reference {
                 w.push(format!(
                     "not identifiable: `{}` = {} has standard error {} (> {:.0} % of max(|value|, {})): \
-                     the data do not determine it (e.g. a peak μ from a curve that stays in the linear region)",
+                     the data do not determine it",
                     names[j],
                     fit.x[j],
                     se[j],
