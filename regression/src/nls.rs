@@ -395,15 +395,14 @@ impl Fit {
 }
 
 /// Counts evaluations and checks the residuals.
-struct Counted<'a, F> {
+struct Counted<F> {
     f: F,
     m: usize,
     evaluations: usize,
     max: usize,
-    _p: std::marker::PhantomData<&'a ()>,
 }
 
-impl<F, E> Counted<'_, F>
+impl<F, E> Counted<F>
 where
     F: FnMut(&[f64], &mut [f64]) -> Result<(), E>,
     E: std::fmt::Display,
@@ -431,7 +430,7 @@ fn norm2(v: &[f64]) -> f64 {
 
 /// Finite-difference Jacobian at x (residuals r0 there).
 fn jacobian<F, E>(
-    f: &mut Counted<'_, F>,
+    f: &mut Counted<F>,
     x: &[f64],
     r0: &[f64],
     params: &[Parameter],
@@ -534,7 +533,6 @@ where
         m,
         evaluations: 0,
         max: options.max_evaluations,
-        _p: std::marker::PhantomData,
     };
     let mut x: Vec<f64> = params
         .iter()
