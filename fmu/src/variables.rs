@@ -893,7 +893,7 @@ pub const VARIABLES: &[Variable] = &[
         vr: vr::RHEOLOGY_MAP,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
-        kind: Kind::Boolean { start: Some(true) },
+        kind: Kind::Boolean { start: Some(false) },
         description: "Evaluate the elastic/plastic J+T model (and the rigid/plastic one of the regime) through an interpolation map built lazily per instance: every map cell is checked against the direct solution to rheology_tolerance/4 before use and refined where the model is not smooth; ~1 us per step once a region of operating states has been visited, up to tens of ms when a new region is first entered; results depend only on the inputs. Used when rheology_model = elastic/plastic, rheology_tolerance >= 1e-4 and (for the elastic/plastic part) compliance_correction = false; false: the strips are integrated at every step (10-700 us with spin)",
         depends: Depends::None,
     },
