@@ -89,7 +89,9 @@ struct api {
     step_t do_step;
 };
 
-/* One scenario: integer and boolean settings, then 40 steps with ramping speeds. */
+/* One scenario: integer and boolean settings, then 40 steps with ramping
+ * speeds from omega1 = w0 (the user-fluid cases start through zero speed;
+ * the report fluids' correlations start inside their data). */
 struct scenario {
     const char *name;
     fmi2ValueReference ivr[4];
@@ -101,6 +103,7 @@ struct scenario {
     fmi2ValueReference rvr[4];
     double rval[4];
     size_t nr;
+    double w0; /* omega1 of the first step, rad/s */
 };
 
 static int fail(const char *what, int st) {
@@ -123,9 +126,9 @@ static int run(const struct api *f, const char *guid, const struct scenario *sc)
     for (int k = 0; k < 40; k++) {
         /* Start-up through zero speed, slip up to ~8 %, load and spin vary. */
         fmi2ValueReference in[] = {LOAD, OMEGA1, OMEGA2, SIDE_SLIP, SKEW, SPIN, INLET};
-        double w1 = 15.0 * k - 20.0;
-        double x[] = {200.0 + 25.0 * k, w1, 0.92 * w1 * 0.033 / 0.0714 + 0.5, 0.002 * k,
-                      0.0005 * k, 2.0 * k - 10.0, 40.0 + k};
+        double w1 = sc->w0 + 5.0 * k;
+        double x[] = {500.0, w1, 0.92 * w1 * 0.033 / 0.0714 + 0.5, 0.002 * k,
+                      0.0005 * k, 2.0 * k - 10.0, 40.0};
         if ((st = f->set_real(c, in, 7, x)) > 1) return fail("fmi2SetReal", st);
         if ((st = f->do_step(c, t, h, 1)) > 1) return fail("fmi2DoStep", st);
         t += h;
@@ -174,18 +177,18 @@ int main(int argc, char **argv) {
         }
     const struct scenario scenarios[] = {
         /* User fluid, elastic/plastic through the rheology map (defaults). */
-        {"user_map", {0}, {0}, 0, {0}, {0}, 0, {0}, {0}, 0},
+        {"user_map", {0}, {0}, 0, {0}, {0}, 0, {0}, {0}, 0, -20.0},
         /* The same, strips integrated at every step. */
-        {"user_direct", {0}, {0}, 0, {MAP}, {0}, 1, {0}, {0}, 0},
+        {"user_direct", {0}, {0}, 0, {MAP}, {0}, 1, {0}, {0}, 0, -20.0},
         /* TDF-88 correlations (clamped), spin peak, disc compliance, skew angle. */
         {"tdf88", {FLUID, SIDE_SLIP_SOURCE}, {2, 2}, 2, {SPIN_PEAK, COMPLIANCE}, {1, 1}, 2,
-         {NU2}, {0.28}, 1},
+         {NU2}, {0.28}, 1, 600.0},
         /* Santotrac 50, rigid/plastic, spin from the tilt geometry. */
         {"santotrac_rigid", {FLUID, RHEOLOGY, SPIN_SOURCE}, {1, 2, 2}, 3, {0}, {0}, 0,
-         {TILT_ANGLE}, {0.3}, 1},
+         {TILT_ANGLE}, {0.3}, 1, 600.0},
         /* Viscoelastic user fluid. */
         {"viscoelastic", {RHEOLOGY}, {3}, 1, {MAP}, {0}, 1, {DEBORAH, Z0, M_USER, MU_USER},
-         {0.5, 0.3, 30.0, 0.06}, 4},
+         {0.5, 0.3, 30.0, 0.06}, 4, -20.0},
     };
     for (size_t i = 0; i < sizeof scenarios / sizeof scenarios[0]; i++)
         if (run(&f, argv[2], &scenarios[i])) return 1;
