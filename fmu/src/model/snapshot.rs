@@ -12,7 +12,7 @@ use crate::variables::{
 /// The complete state of a [`super::TractionFmu`] (also its fmi2FMUstate).
 /// Values of a causality and type sit in table order
 /// ([`variables::Slot`]); the model reads them by value reference with
-/// positions resolved at compile time ([`Snapshot::param`], ...).
+/// positions resolved at compile time (`Snapshot::param`, ...).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Snapshot {
     pub(super) mode: Mode,
