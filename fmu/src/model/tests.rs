@@ -312,12 +312,12 @@ fn user_fluid() -> traction_contact::Fluid {
     traction_contact::Fluid::constant(35.0, 0.075).unwrap()
 }
 
-/// The FMU's default options (rheology_map on, tolerance 1e-4).
+/// The FMU's default options (rheology_map off, tolerance 1e-4).
 fn options(model: traction_contact::Model) -> traction_contact::Options {
     traction_contact::Options {
         model,
         rolling_speed_floor: 0.01,
-        map: true,
+        map: false,
         ..traction_contact::Options::default()
     }
 }
@@ -368,8 +368,8 @@ fn viscoelastic_equals_traction_contact_and_infinite_deborah_is_elastic_plastic(
 
 #[test]
 fn rheology_map_and_tolerance_parameters() {
-    // rheology_map off: traction-contact without the map, bit-identical;
-    // on (the default): within 2·tol = 2e-4 of it in J4..J6 (both are
+    // rheology_map off (the default): traction-contact without the map,
+    // bit-identical; on: within 2·tol = 2e-4 of it in J4..J6 (both are
     // within tol of the converged solution; spin 20 rad/s, side slip);
     // rheology_tolerance
     // reaches the contact (1e-3: same as traction-contact at 1e-3); out
@@ -389,9 +389,9 @@ fn rheology_map_and_tolerance_parameters() {
         )
         .unwrap()
     };
-    let (_, off) = run(&[], &[], &[(vr::RHEOLOGY_MAP, false)]).unwrap();
+    let (_, off) = run(&[], &[], &[]).unwrap();
     assert_matches(&off, &direct(&contact(false, 1e-4), &off));
-    let (_, on) = run(&[], &[], &[]).unwrap();
+    let (_, on) = run(&[], &[], &[(vr::RHEOLOGY_MAP, true)]).unwrap();
     for n in 3..6 {
         let (a, b) = (
             on[out_index(vr::J1 + n).unwrap()],
@@ -404,7 +404,14 @@ fn rheology_map_and_tolerance_parameters() {
         "no spin: vacuous"
     );
     let (_, coarse) = run(&[(vr::RHEOLOGY_TOLERANCE, 1e-3)], &[], &[]).unwrap();
-    assert_matches(&coarse, &direct(&contact(true, 1e-3), &coarse));
+    assert_matches(&coarse, &direct(&contact(false, 1e-3), &coarse));
+    let (_, coarse_map) = run(
+        &[(vr::RHEOLOGY_TOLERANCE, 1e-3)],
+        &[],
+        &[(vr::RHEOLOGY_MAP, true)],
+    )
+    .unwrap();
+    assert_matches(&coarse_map, &direct(&contact(true, 1e-3), &coarse_map));
     for bad in [1e-8, 0.5] {
         let e = run(&[(vr::RHEOLOGY_TOLERANCE, bad)], &[], &[]).unwrap_err();
         assert!(e.message.contains("rheology_tolerance"), "{e}");

@@ -176,8 +176,8 @@ int main(int argc, char **argv) {
             return 1;
         }
     const struct scenario scenarios[] = {
-        /* User fluid, elastic/plastic through the rheology map (defaults). */
-        {"user_map", {0}, {0}, 0, {0}, {0}, 0, {0}, {0}, 0, -20.0},
+        /* User fluid, elastic/plastic through the rheology map. */
+        {"user_map", {0}, {0}, 0, {MAP}, {1}, 1, {0}, {0}, 0, -20.0},
         /* The same, strips integrated at every step. */
         {"user_direct", {0}, {0}, 0, {MAP}, {0}, 1, {0}, {0}, 0, -20.0},
         /* TDF-88 correlations (clamped), spin peak, disc compliance, skew angle. */
