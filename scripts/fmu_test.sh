@@ -11,3 +11,4 @@ mkdir -p "$TARGET/fmu"
 FMU="$(realpath "$TARGET/fmu")/TractionContact.fmu"
 cargo run --locked -q -p traction-cli -- fmu build --out "$FMU"
 TRACTION_FMU="$FMU" "$VENV/bin/python" -m pytest -q -p no:cacheprovider fmu/python
+V="$(realpath "$TARGET/fmu")/ToroidalVariator.fmu"; cargo run --locked -q -p traction-cli -- fmu build --model variator --out "$V" && TRACTION_VARIATOR_FMU="$V" "$VENV/bin/python" -m pytest -q -p no:cacheprovider variator-fmu/python
