@@ -624,7 +624,7 @@ unsafe fn state_ref<'a>(s: Fmi2FmuState, func: &str) -> Result<&'a mut StateBox,
 /// fmi2SetFMUstate.
 ///
 /// # Safety
-/// As [`state_ref`].
+/// `state` NULL or a state of this FMU (from fmi2GetFMUstate or fmi2DeSerializeFMUstate).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, state: Fmi2FmuState) -> Fmi2Status {
     with_instance(c, "fmi2SetFMUstate", |i| {
@@ -665,7 +665,7 @@ pub unsafe extern "C" fn fmi2FreeFMUstate(
 /// fmi2SerializedFMUstateSize.
 ///
 /// # Safety
-/// As [`state_ref`]; `size` a valid pointer.
+/// `state` NULL or a state of this FMU; `size` a valid pointer.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
     c: Fmi2Component,
@@ -687,7 +687,7 @@ pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
 /// fmi2SerializeFMUstate.
 ///
 /// # Safety
-/// As [`state_ref`]; `bytes` valid for `size` bytes.
+/// `state` NULL or a state of this FMU; `bytes` valid for `size` bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SerializeFMUstate(
     c: Fmi2Component,
