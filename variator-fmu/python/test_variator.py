@@ -73,6 +73,7 @@ def test_simulate_fmu_sweeps_the_ratio_with_power_balance(fmu_path):
         step_size=1e-3,
         output_interval=1e-3,
         input=signals,
+        start_values={"rheology_map": False},
         output=[
             "tilt_angle",
             "speed_ratio",
