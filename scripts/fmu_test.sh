@@ -15,6 +15,7 @@ OUT="$(realpath "$TARGET/fmu")"
 FMU="$OUT/TractionContact.fmu"
 cargo run --locked -q -p traction-cli -- fmu build --out "$FMU"
 TRACTION_FMU="$FMU" "$VENV/bin/python" -m pytest -q -p no:cacheprovider fmu/python
+V="$OUT/ToroidalVariator.fmu"; cargo run --locked -q -p traction-cli -- fmu build --model variator --out "$V" && TRACTION_VARIATOR_FMU="$V" "$VENV/bin/python" -m pytest -q -p no:cacheprovider variator-fmu/python
 
 echo "== win64: TractionContact.dll under Wine against linux64"
 start=$(date +%s)

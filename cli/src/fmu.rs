@@ -40,6 +40,9 @@ struct BuildArgs {
     /// Where to write the FMU (e.g. TractionContact.fmu).
     #[arg(long)]
     out: PathBuf,
+    /// Which FMU: the traction contact or the toroidal variator (ToroidalVariator.fmu).
+    #[arg(long, value_enum, default_value_t = crate::fmu_variator::FmuModel::Contact)]
+    model: crate::fmu_variator::FmuModel,
     /// Pack this prebuilt linux64 library instead of building it
     /// (`cargo build --release -p traction-fmu --lib` makes
     /// `<target-dir>/release/libtraction_fmu.so`).
@@ -64,6 +67,14 @@ pub fn run(args: FmuArgs) -> Result<(), CliError> {
                 .map_err(CliError::model)?;
             print!("{xml}");
             Ok(())
+        }
+        FmuCommand::Build(b) if b.model == crate::fmu_variator::FmuModel::Variator => {
+            if b.win64_library.is_some() || b.platforms.iter().any(|p| *p != Platform::Linux64) {
+                return Err(CliError::Usage(
+                    "--model variator: ToroidalVariator.fmu is built for linux64 only".into(),
+                ));
+            }
+            crate::fmu_variator::build(&b.out, b.library)
         }
         FmuCommand::Build(b) => {
             let prebuilt = [

@@ -16,6 +16,7 @@ mod field;
 mod fit;
 mod fluid;
 mod fmu;
+mod fmu_variator;
 mod hertz;
 mod identify;
 mod jt;
