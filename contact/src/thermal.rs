@@ -48,16 +48,25 @@
 //! ([`Film::HamrockDowson`]). It is set by the inlet and does not change with
 //! the film's temperature rise.
 //!
-//! The fluid at the raised temperature: `μ(ΔT) = μ(θ) e^(−β_μ ΔT)`,
-//! `m(ΔT) = m(θ) e^(−β_m ΔT)` (for [`crate::Fluid::Physical`]: τ̄ and Ḡ), with
-//! the temperature coefficients β given by the user or, for the report fluids,
-//! from their correlations ([`crate::fluid_temperature_coefficients`]).
+//! The fluid at the raised temperature: `μ(ΔT) = μ e^(−β_μ (ΔT − ΔT_peak))`,
+//! `m(ΔT) = m e^(−β_m ΔT)` (for [`crate::Fluid::Physical`]: τ̄ and Ḡ), with
+//! the temperature coefficients β given by the user ([`Thermal::mu_coefficient`])
+//! or, for the report fluids, their identified values
+//! (traction-fluids `ThermalProperties`, one set per fluid). `ΔT_peak` is the
+//! rise of the measurement that defined μ ([`Thermal::mu_at_traction_peak`]):
+//! a zero-spin side-slip trace at its peak (reduced slip S = 3, [`PEAK_REDUCED_SLIP`],
+//! loss μ N ΔV), since a measured peak μ already carries its own heating; 0
+//! when μ is an isothermal inlet value.
 //!
 //! The fixed point `ΔT = q(ΔT)(R_s + R_f)` is solved on the temperature rise,
-//! bracketed and with log-secant steps ([`solve_fixed_point`]): the loss falls
-//! close to exponentially with ΔT, so 2–4 evaluations of the traction model
-//! converge. Its accuracy is [`TEMPERATURE_TOLERANCE`]. A state with no
-//! dissipation (no relative motion, N = 0) has ΔT = 0 exactly.
+//! bracketed and with log-secant steps ([`solve_fixed_point`], started at
+//! ΔT_peak): the loss falls close to exponentially with ΔT, so 3–5
+//! evaluations of the traction model converge (the first two at a ten times
+//! coarser rheology accuracy, the last one is the result). Its accuracy is
+//! [`TEMPERATURE_TOLERANCE`] / [`TEMPERATURE_RELATIVE_TOLERANCE`]. A state
+//! with no dissipation (no relative motion, N = 0) has ΔT = 0 exactly; no
+//! convergence, a runaway or a non-finite loss is a [`ContactError::Thermal`],
+//! never a NaN. Cost ≈ 3× an isothermal evaluation with spin (contact README).
 //!
 //! # Assumptions and valid ranges
 //! * Steady state, contact-mean (lumped) temperature; the local temperature
@@ -99,6 +108,9 @@ pub const STEEL_CONDUCTIVITY: f64 = 46.6;
 pub const STEEL_HEAT_CAPACITY: f64 = 7827.0 * 475.0;
 
 /// How the film thickness of the thermal model is obtained.
+///
+/// The film temperature rise is dominated by the conduction term h/(8k_f)
+/// at traction-drive speeds, so the film matters most.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
 pub enum Film {
@@ -120,6 +132,11 @@ pub enum Film {
 }
 
 /// Parameters of the thermal model ([`crate::Options::thermal`]). SI units.
+/// `None` fields take the report fluid's own values (traction-fluids
+/// `ThermalProperties`); a user fluid must give `mu_coefficient`,
+/// `fluid_conductivity` and a film ([`Film::Thickness`] or
+/// [`Film::HamrockDowson`]; a physical fluid's own h serves as
+/// [`Film::FromFluid`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Thermal {
     /// Film thickness source (default: the report fluid's own properties).
@@ -133,10 +150,11 @@ pub struct Thermal {
     pub disc_heat_capacity: f64,
     /// Temperature coefficient β_μ = −d ln μ/dθ of the peak traction
     /// coefficient (of τ̄ for a physical fluid), 1/K (None: the report
-    /// fluid's correlation).
+    /// fluid's identified value).
     pub mu_coefficient: Option<f64>,
     /// Temperature coefficient β_m = −d ln m/dθ of the traction slope (of Ḡ
-    /// for a physical fluid), 1/K (None: the report fluid's correlation).
+    /// for a physical fluid), 1/K (None: the report fluid's value; 0 for a
+    /// user fluid).
     pub slope_coefficient: Option<f64>,
     /// μ is a measured traction peak (the report's definition: the peak of a
     /// zero-spin side-slip trace at the same P0, U, θ), which already carries
