@@ -330,16 +330,18 @@ impl TractionContact {
         }
         let inp = Inputs::new(k, j[0], j[1], j[2])?.with_stiffness_ratio(gy)?;
         if self.map_applies() && gy == 1.0 {
-            let o = self.with_map(|m| m.evaluate(j[0], j[1], j[2]))?;
+            let o = self.with_map(|m| m.evaluate(&inp))?;
             return Ok(Branch {
                 j,
                 out: [o.j4, o.j5, o.j6],
             });
         }
         let o = match self.options.model {
-            Model::ElasticPlastic => {
-                traction_rheology::elastic_plastic_with(&inp, self.options.properties, accuracy)?
-            }
+            Model::ElasticPlastic => traction_rheology::evaluate(
+                &inp,
+                Model::PropertyVariation(self.options.properties),
+                accuracy,
+            )?,
             model => traction_rheology::evaluate(&inp, model, accuracy)?,
         };
         Ok(Branch {

@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 use traction_rheology::Inputs;
 
 use crate::contact::Branch;
-use crate::{ContactError, REGIME_TOLERANCE, Regime, TractionContact};
+use crate::{ContactError, Model, REGIME_TOLERANCE, Regime, TractionContact};
 
 impl TractionContact {
     /// Regions I–III of App. IV figure 14 by the 5 % criterion (crate docs).
@@ -24,10 +24,10 @@ impl TractionContact {
         }
         // Region III: the rigid/plastic solution at the same J's within 5 %.
         let rp = if self.map_applies() {
-            self.with_map(|m| m.rigid_plastic(j1, j2, j3))?
+            self.with_map(|m| m.rigid_plastic(&Inputs::new(k, j1, j2, j3)?))?
         } else {
             let inp = Inputs::new(k, j1, j2, j3)?;
-            traction_rheology::rigid_plastic(&inp, self.options().accuracy)?
+            traction_rheology::evaluate(&inp, Model::RigidPlastic, self.options().accuracy)?
         };
         let d = (j4 - rp.j4).hypot(j5 - rp.j5).hypot(j6 - rp.j6);
         let r = rp.j4.hypot(rp.j5).hypot(rp.j6);

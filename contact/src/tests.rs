@@ -207,7 +207,7 @@ fn start_up_passes_to_the_rigid_plastic_limit() {
     // crate at the same J ratios (elastic lag < 1e-3 at J ~ 1e5; tol 2e-3).
     let r = c.evaluate(&state(n, 0.0, 0.05, 0.02, 40.0)).unwrap();
     let inp = Inputs::new(r.k, r.j1, r.j2, r.j3).unwrap();
-    let rp = traction_rheology::rigid_plastic(&inp, Accuracy::default()).unwrap();
+    let rp = traction_rheology::evaluate(&inp, Model::RigidPlastic, Accuracy::default()).unwrap();
     assert!(
         (r.j4 - rp.j4).abs() < 2e-3 && (r.j5 - rp.j5).abs() < 2e-3,
         "{r:?} {rp:?}"
@@ -486,7 +486,8 @@ fn property_distribution_option() {
     let s = state(1500.0, 20.0, 0.03, -0.02, 30.0);
     let (r, r0) = (c.evaluate(&s).unwrap(), d.evaluate(&s).unwrap());
     let inp = Inputs::new(r.k, r.j1, r.j2, r.j3).unwrap();
-    let o = traction_rheology::elastic_plastic_with(&inp, props, opts.accuracy).unwrap();
+    let o =
+        traction_rheology::evaluate(&inp, Model::PropertyVariation(props), opts.accuracy).unwrap();
     assert!((o.j4 - r.j4).abs() < 1e-12 && (o.j5 - r.j5).abs() < 1e-12);
     assert!((r.j4 - r0.j4).abs() > 1e-2, "{} {}", r.j4, r0.j4);
 }

@@ -232,7 +232,8 @@ pub fn appendix_vi_series(figures: &mut [Figure]) -> Result<(), ReproduceError> 
                 Ok((dv, vi_point(tr, positive, m, mu, speed, dv, None)?))
             })
             .collect::<Result<_, ReproduceError>>()?;
-        if let Some(f) = figures.iter_mut().find(|f| f.title.contains(tr)) {
+        let tag = format!("(trace {tr},");
+        if let Some(f) = figures.iter_mut().find(|f| f.title.contains(&tag)) {
             f.series.push(Series {
                 name: SERIES_NAME.into(),
                 style: Style::Line,
