@@ -4,22 +4,39 @@
 //! Input columns (SI units): `rx1,ry1,rx2,ry2` (principal radii, m; flat =
 //! `inf`), `e1,nu1,e2,nu2` (Pa, -), `load` (N), `u` (rolling speed, m/s),
 //! `du` (slip ΔU, m/s), `dv` (side slip ΔV, m/s), `omega` (spin, rad/s),
-//! `theta` (inlet temperature, °C), and the fluid: either `fluid`
-//! (`santotrac-50` or `tdf-88`, the report's correlations) or `m,mu` (user
-//! slope and peak traction coefficient; optional `mu_spin`). A table may have
-//! both a `fluid` and `m,mu` columns as long as each row fills one of them.
+//! `theta` (inlet temperature, °C), and the fluid: `fluid` (`santotrac-50` or
+//! `tdf-88`, the report's correlations) and/or `m,mu` (user slope and peak
+//! traction coefficient; optional `mu_spin`). A row that fills only `fluid`
+//! uses the correlations; only `m,mu` the user values; both: m and μ are the
+//! values at the inlet temperature and the named fluid supplies their
+//! temperature dependence and film properties for `--thermal`.
 //! Other columns are passed through unchanged.
 //!
+//! `--thermal`: the thermal contact (traction-contact `thermal`: the film's
+//! temperature rise from the contact's own loss, μ and m at the raised
+//! temperature, solved self-consistently). Optional columns override the
+//! thermal properties per row (empty cell = default): `film_thickness` (m),
+//! `viscosity` (inlet η₀, Pa·s) with `pressure_viscosity` (α, 1/Pa) for the
+//! Hamrock–Dowson film, `fluid_conductivity` (W/(m·K)), `disc_conductivity`
+//! (W/(m·K)), `disc_heat_capacity` (ρc, J/(m³·K)), `mu_temperature_coefficient`
+//! and `m_temperature_coefficient` (β = −d ln μ/dθ, −d ln m/dθ, 1/K). A user
+//! fluid (`m,mu` only) needs `mu_temperature_coefficient`,
+//! `fluid_conductivity` and a film (`film_thickness`, or `viscosity` and
+//! `pressure_viscosity`); the report fluids have their own
+//! (traction-fluids `thermal_properties.csv`). Discs default to steel.
+//!
 //! Output: the input columns followed by `fx,fy,mz,loss,a,b,k,p0,m_used,
-//! mu_used,J1,J2,J3,J4,J5,J6,J7,regime` (N, N, N·m, W, m, m, -, Pa, -, -, the
-//! report's dimensionless groups, regime name). Every row is evaluated before
-//! anything is written; a row that cannot be evaluated stops the command with
-//! an error naming the row, the line and the quantity.
+//! mu_used,J1,J2,J3,J4,J5,J6,J7,regime,temperature_rise` (N, N, N·m, W, m, m,
+//! -, Pa, -, -, the report's dimensionless groups, regime name, K; with
+//! `--thermal` m_used and mu_used are at the raised temperature, without it
+//! the temperature rise is 0). Every row is evaluated before anything is
+//! written; a row that cannot be evaluated stops the command with an error
+//! naming the row, the line and the quantity.
 
 use clap::{Args, ValueEnum};
 use traction_contact::{
-    Accuracy, Body, Compliance, Direction, DiscMaterial, EnvelopeRule, Evaluation, Fluid, Limit,
-    Model, Modulus, OperatingState, Options, Properties, TractionContact,
+    Accuracy, Body, Compliance, Direction, DiscMaterial, EnvelopeRule, Evaluation, Film, Fluid,
+    Limit, Model, Modulus, OperatingState, Options, Properties, Thermal, TractionContact,
 };
 
 use crate::error::CliError;
@@ -31,9 +48,38 @@ const INPUT_COLUMNS: [&str; 14] = [
 ];
 
 /// Output columns appended to the input columns.
-pub const OUTPUT_COLUMNS: [&str; 18] = [
-    "fx", "fy", "mz", "loss", "a", "b", "k", "p0", "m_used", "mu_used", "J1", "J2", "J3", "J4",
-    "J5", "J6", "J7", "regime",
+pub const OUTPUT_COLUMNS: [&str; 19] = [
+    "fx",
+    "fy",
+    "mz",
+    "loss",
+    "a",
+    "b",
+    "k",
+    "p0",
+    "m_used",
+    "mu_used",
+    "J1",
+    "J2",
+    "J3",
+    "J4",
+    "J5",
+    "J6",
+    "J7",
+    "regime",
+    "temperature_rise",
+];
+
+/// Optional thermal-property columns (`--thermal`), SI units.
+pub const THERMAL_COLUMNS: [&str; 8] = [
+    "film_thickness",
+    "viscosity",
+    "pressure_viscosity",
+    "fluid_conductivity",
+    "disc_conductivity",
+    "disc_heat_capacity",
+    "mu_temperature_coefficient",
+    "m_temperature_coefficient",
 ];
 
 /// Constitutive model.
@@ -113,6 +159,10 @@ pub struct ModelOptions {
     /// Elastic/plastic model: limiting shear stress over the contact.
     #[arg(long, value_enum, default_value_t = LimitArg::Pressure)]
     pub limit: LimitArg,
+    /// Thermal contact: the film's temperature rise from the contact's own
+    /// loss, μ and m at that temperature (output column temperature_rise, K).
+    #[arg(long)]
+    pub thermal: bool,
 }
 
 impl ModelOptions {
@@ -152,6 +202,7 @@ impl ModelOptions {
             // Rows are independent contacts: a map would be built per row
             // and never reused.
             map: false,
+            thermal: self.thermal.then(Thermal::default),
         })
     }
 
@@ -184,11 +235,14 @@ pub fn report_fluid(name: &str, rule: EnvelopeRule, spin_peak: bool) -> Result<F
 pub struct ContactArgs {
     /// Input CSV (`-` for stdin). Columns rx1,ry1,rx2,ry2 (m), e1,nu1,e2,nu2
     /// (Pa, -), load (N), u, du, dv (m/s), omega (rad/s), theta (°C), and
-    /// fluid (santotrac-50 | tdf-88) or m,mu (optional mu_spin).
+    /// fluid (santotrac-50 | tdf-88) and/or m,mu (optional mu_spin); with
+    /// --thermal optional film_thickness, viscosity, pressure_viscosity,
+    /// fluid_conductivity, disc_conductivity, disc_heat_capacity,
+    /// mu_temperature_coefficient, m_temperature_coefficient (SI).
     #[arg(long, default_value = "-")]
     pub input: String,
     /// Output CSV (`-` for stdout): the input columns followed by
-    /// fx,fy,mz,loss,a,b,k,p0,m_used,mu_used,J1..J7,regime.
+    /// fx,fy,mz,loss,a,b,k,p0,m_used,mu_used,J1..J7,regime,temperature_rise.
     #[arg(long, default_value = "-")]
     pub output: String,
     /// Model options.
@@ -211,16 +265,25 @@ fn solve_row(
     } else {
         None
     };
-    let fluid = match name {
-        Some(n) => report_fluid(&n, model.rule(), model.spin_peak)
+    let (m, mu) = if table.has("m") && table.has("mu") {
+        (table.opt_f64(row, "m")?, table.opt_f64(row, "mu")?)
+    } else {
+        (None, None)
+    };
+    let fluid = match (name, m, mu) {
+        (Some(n), None, None) => report_fluid(&n, model.rule(), model.spin_peak)
             .map_err(|e| table.cell_error(row, "fluid", e))?,
-        None => {
-            let (m, mu) = (table.opt_f64(row, "m")?, table.opt_f64(row, "mu")?);
+        // Both: the user's m, μ at the inlet, the fluid's temperature dependence.
+        (Some(n), Some(m), Some(mu)) => report_fluid(&n, model.rule(), model.spin_peak)
+            .map_err(|e| table.cell_error(row, "fluid", e))?
+            .with_inlet_values(m, mu)
+            .map_err(|e| table.row_error(row, e))?,
+        (_, m, mu) => {
             let (Some(m), Some(mu)) = (m, mu) else {
                 return Err(table.cell_error(
                     row,
                     if m.is_none() { "m" } else { "mu" },
-                    "no fluid: fill `fluid` (santotrac-50 or tdf-88) or both `m` and `mu`",
+                    "no fluid: fill `fluid` (santotrac-50 or tdf-88) and/or both `m` and `mu`",
                 ));
             };
             let f = Fluid::constant(m, mu).map_err(|e| table.row_error(row, e))?;
@@ -232,20 +295,71 @@ fn solve_row(
             }
         }
     };
+    let mut opts = *opts;
+    if let Some(th) = opts.thermal.as_mut() {
+        thermal_columns(table, row, th)?;
+    }
     let contact =
-        TractionContact::new(&body1, &body2, fluid, *opts).map_err(|e| table.row_error(row, e))?;
-    let state = OperatingState::new(
-        v("load")?,
-        v("u")?,
-        v("du")?,
-        v("dv")?,
-        v("omega")?,
-        v("theta")?,
-    )
-    .map_err(|e| table.row_error(row, e))?;
+        TractionContact::new(&body1, &body2, fluid, opts).map_err(|e| table.row_error(row, e))?;
+    let state = OperatingState::builder()
+        .load(v("load")?)
+        .rolling_speed(v("u")?)
+        .slip(v("du")?)
+        .side_slip(v("dv")?)
+        .spin(v("omega")?)
+        .inlet_temperature_celsius(v("theta")?)
+        .build()
+        .map_err(|e| table.row_error(row, e))?;
     contact
         .evaluate(&state)
         .map_err(|e| table.row_error(row, e))
+}
+
+/// The optional thermal-property columns of a row into `th` (empty or absent
+/// cells keep the defaults; checked by the contact, errors name the quantity).
+fn thermal_columns(table: &Table, row: usize, th: &mut Thermal) -> Result<(), CliError> {
+    let col = |c: &str| -> Result<Option<f64>, CliError> {
+        if table.has(c) {
+            table.opt_f64(row, c)
+        } else {
+            Ok(None)
+        }
+    };
+    if let Some(h) = col("film_thickness")? {
+        th.film = Film::Thickness(h);
+    }
+    match (col("viscosity")?, col("pressure_viscosity")?) {
+        (Some(viscosity), Some(pressure_viscosity)) => {
+            th.film = Film::HamrockDowson {
+                viscosity,
+                pressure_viscosity,
+            };
+        }
+        (None, None) => {}
+        (v, _) => {
+            return Err(table.cell_error(
+                row,
+                if v.is_none() { "viscosity" } else { "pressure_viscosity" },
+                "the Hamrock–Dowson film needs both `viscosity` (Pa·s) and `pressure_viscosity` (1/Pa)",
+            ));
+        }
+    }
+    if let Some(k) = col("fluid_conductivity")? {
+        th.fluid_conductivity = Some(k);
+    }
+    if let Some(k) = col("disc_conductivity")? {
+        th.disc_conductivity = k;
+    }
+    if let Some(c) = col("disc_heat_capacity")? {
+        th.disc_heat_capacity = c;
+    }
+    if let Some(b) = col("mu_temperature_coefficient")? {
+        th.mu_coefficient = Some(b);
+    }
+    if let Some(b) = col("m_temperature_coefficient")? {
+        th.slope_coefficient = Some(b);
+    }
+    Ok(())
 }
 
 /// The output cells of one evaluation.
@@ -258,6 +372,7 @@ pub fn output_cells(e: &Evaluation) -> Vec<String> {
     .map(fmt_f64)
     .collect();
     v.push(e.regime.name().to_string());
+    v.push(fmt_f64(e.temperature_rise));
     v
 }
 
@@ -269,6 +384,19 @@ pub fn run(args: ContactArgs) -> Result<(), CliError> {
     let user_columns = table.has("m") && table.has("mu");
     if !(table.has("fluid") || user_columns) {
         table.require(&["fluid"])?;
+    }
+    if !args.model.thermal {
+        let given: Vec<&str> = THERMAL_COLUMNS
+            .into_iter()
+            .filter(|c| table.has(c))
+            .collect();
+        if !given.is_empty() {
+            eprintln!(
+                "warning: {}: thermal-property columns {} are used only with --thermal",
+                table.source_name,
+                given.join(", ")
+            );
+        }
     }
     let mut results = Vec::with_capacity(table.len());
     for row in 0..table.len() {

@@ -645,6 +645,7 @@ pub fn run(args: IdentifyArgs) -> Result<(), CliError> {
         floor: args.floor,
         modulus: ModulusArg::Constant,
         limit: LimitArg::Pressure,
+        thermal: false,
     };
     let mut options = model.options().map_err(CliError::Usage)?;
     options.classify_regime = false;

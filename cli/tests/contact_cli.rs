@@ -8,9 +8,26 @@ use common::{fails, ok, traction};
 
 use traction_contact::{Body, EnvelopeRule, Fluid, OperatingState, Options, TractionContact};
 
-const OUT: [&str; 18] = [
-    "fx", "fy", "mz", "loss", "a", "b", "k", "p0", "m_used", "mu_used", "J1", "J2", "J3", "J4",
-    "J5", "J6", "J7", "regime",
+const OUT: [&str; 19] = [
+    "fx",
+    "fy",
+    "mz",
+    "loss",
+    "a",
+    "b",
+    "k",
+    "p0",
+    "m_used",
+    "mu_used",
+    "J1",
+    "J2",
+    "J3",
+    "J4",
+    "J5",
+    "J6",
+    "J7",
+    "regime",
+    "temperature_rise",
 ];
 
 const HEADER: &str = "rx1,ry1,rx2,ry2,e1,nu1,e2,nu2,load,u,du,dv,omega,theta";
@@ -76,6 +93,81 @@ fn contact_rows_match_the_library() {
         }
         assert_eq!(col("regime"), e.regime.name());
     }
+}
+
+/// `--thermal`: a row with both `fluid` and `m,mu` (the user's values at the
+/// inlet, the fluid's temperature dependence), a user fluid with its thermal
+/// columns, and the errors of a user fluid without them.
+#[test]
+fn thermal_rows_match_the_library() {
+    let input = format!(
+        "{HEADER},fluid,m,mu,film_thickness,fluid_conductivity,mu_temperature_coefficient\n\
+         {HS_K5},4620,80,0,0.5,1300,73,santotrac-50,35,0.075,,,\n\
+         {HS_K5},4620,80,0,0.5,0,73,,35,0.075,5e-7,0.11,0.003\n"
+    );
+    let rows = ok(&["contact", "--thermal", "--envelope", "clamp"], &input);
+    let (b1, b2) = hs_k5();
+    let th = traction_contact::Thermal::default();
+    let fluids = [
+        (
+            Fluid::santotrac_50(EnvelopeRule::Clamp)
+                .unwrap()
+                .with_inlet_values(35.0, 0.075)
+                .unwrap(),
+            th,
+        ),
+        (
+            Fluid::constant(35.0, 0.075).unwrap(),
+            traction_contact::Thermal {
+                film: traction_contact::Film::Thickness(5e-7),
+                fluid_conductivity: Some(0.11),
+                mu_coefficient: Some(0.003),
+                ..th
+            },
+        ),
+    ];
+    let w = [1300.0, 0.0];
+    for (i, (fluid, th)) in fluids.into_iter().enumerate() {
+        let opts = Options {
+            thermal: Some(th),
+            ..Options::default()
+        };
+        let c = TractionContact::new(&b1, &b2, fluid, opts).unwrap();
+        let s = OperatingState::builder()
+            .load(4620.0)
+            .rolling_speed(80.0)
+            .side_slip(0.5)
+            .spin(w[i])
+            .inlet_temperature_celsius(73.0)
+            .build()
+            .unwrap();
+        let e = c.evaluate(&s).unwrap();
+        let col = |name: &str| -> f64 {
+            let j = rows[0].iter().position(|h| h == name).unwrap();
+            rows[i + 1][j].parse().unwrap()
+        };
+        assert!(e.temperature_rise > 1.0, "row {i}");
+        assert_eq!(col("temperature_rise"), e.temperature_rise, "row {i}");
+        assert_eq!(col("fy"), e.fy, "row {i}");
+        assert_eq!(col("mu_used"), e.mu_used, "row {i}");
+    }
+    // A user fluid needs its temperature coefficient.
+    let e = fails(
+        &["contact", "--thermal"],
+        &format!(
+            "{HEADER},m,mu,film_thickness,fluid_conductivity\n{HS_K5},4620,80,0,0.5,0,73,35,0.075,5e-7,0.11\n"
+        ),
+    );
+    assert!(
+        e.contains("row 1") && e.contains("temperature coefficient"),
+        "{e}"
+    );
+    // Unphysical property: named with its range.
+    let e = fails(
+        &["contact", "--thermal"],
+        &format!("{HEADER},fluid,disc_conductivity\n{HS_K5},4620,80,0,0.5,0,73,santotrac-50,-3\n"),
+    );
+    assert!(e.contains("disc thermal conductivity"), "{e}");
 }
 
 #[test]

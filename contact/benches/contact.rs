@@ -11,7 +11,7 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use traction_contact::{
-    Accuracy, Body, EnvelopeRule, Fluid, Model, OperatingState, Options, TractionContact,
+    Accuracy, Body, EnvelopeRule, Fluid, Model, OperatingState, Options, Thermal, TractionContact,
 };
 
 fn bodies() -> (Body, Body) {
@@ -49,6 +49,39 @@ fn bench(c: &mut Criterion) {
 
     c.bench_function("evaluate, spin, tol 1e-4, regime", |b| {
         b.iter(|| full.evaluate(black_box(&s)))
+    });
+    // The thermal contact: Santotrac 50 with the trace's m, μ at the inlet,
+    // its own thermal properties; against the isothermal evaluation of the
+    // same fluid (the cost ratio of the thermal model).
+    let santotrac = |thermal| {
+        let (b1, b2) = bodies();
+        let f = Fluid::santotrac_50(EnvelopeRule::Clamp)
+            .and_then(|f| f.with_inlet_values(35.0, 0.075))
+            .expect("fluid");
+        TractionContact::new(
+            &b1,
+            &b2,
+            f,
+            Options {
+                thermal,
+                ..Options::default()
+            },
+        )
+        .expect("contact")
+    };
+    let iso = santotrac(None);
+    let hot = santotrac(Some(Thermal::default()));
+    let e = hot.evaluate(&s).expect("thermal");
+    eprintln!(
+        "thermal case: rise {:.1} K, μ {:.4}",
+        e.temperature_rise, e.mu_used
+    );
+    c.bench_function(
+        "thermal: isothermal reference, spin, tol 1e-4, regime",
+        |b| b.iter(|| iso.evaluate(black_box(&s))),
+    );
+    c.bench_function("thermal: evaluate, spin, tol 1e-4, regime", |b| {
+        b.iter(|| hot.evaluate(black_box(&s)))
     });
     let no_regime = contact(Options {
         classify_regime: false,

@@ -36,6 +36,16 @@ pub enum ContactError {
     /// range), near the report's θ' singularity, or non-physical.
     #[error("fluid correlation: {0}")]
     Fluid(#[from] FluidError),
+    /// The thermal model's temperature fixed point failed: no convergence,
+    /// a runaway (no fixed point below the accepted rise), or a non-finite
+    /// dissipation.
+    #[error("thermal model: {reason} (temperature rise {temperature_rise} K)")]
+    Thermal {
+        /// What failed.
+        reason: &'static str,
+        /// The temperature rise reached, K.
+        temperature_rise: f64,
+    },
     /// The body motion could not be turned into contact kinematics.
     #[error("kinematics: {0}")]
     Kinematics(#[from] KinematicsError),

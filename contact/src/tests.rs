@@ -3,6 +3,8 @@
 
 use super::*;
 use proptest::prelude::*;
+use std::f64::consts::PI;
+use traction_rheology::Inputs;
 use traction_rheology::closed;
 
 /// Low-speed machine, k = 1 discs of Table 2-1.

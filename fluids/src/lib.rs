@@ -21,6 +21,9 @@
 //! * `appendix_i_traces.csv` (8 reduced traces, [`appendix_i_traces`]),
 //!   `appendix_vii_e_combined.csv` (33 combined-slip tests, [`appendix_vii_e`]),
 //!   `main_text_tables.csv` (Tables 2-6, 4-1, 4-2, 4-3, [`main_text_tables`]).
+//! * `thermal_properties.csv`: inlet viscosity, pressure–viscosity
+//!   coefficient, conductivity and temperature coefficients of μ and m for
+//!   the thermal contact model, with sources — [`ThermalProperties`].
 //!
 //! ## Assumptions
 //! * Z for each test is C''·P0 with the C'' the report's III-E regression used
@@ -62,6 +65,7 @@
 mod data;
 mod error;
 mod fluid;
+mod thermal;
 
 pub use data::{
     CombinedSlipPoint, Correction, FluidName, ListingRow, MainTableRow, PrintedResult, SpinFactor,
@@ -72,4 +76,5 @@ pub use error::FluidError;
 pub use fluid::{
     Envelope, Estimate, Fluid, FluidCorrelation, Policy, Quantity, Query, Source, data_set,
 };
+pub use thermal::ThermalProperties;
 pub use traction_regression::{RegressionError, TemperatureForm};

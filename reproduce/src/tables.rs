@@ -174,6 +174,7 @@ fn row(series: &str, label: String, x: f64, computed: f64, printed: Option<f64>)
         printed,
         measured: None,
         tol: None,
+        thermal: None,
     }
 }
 
@@ -605,6 +606,7 @@ pub fn appendix_i() -> Result<Reproduced, ReproduceError> {
         y_label: "J5 = Fy/(Fz·μ)".into(),
         series,
     };
+    crate::thermal::attach_appendix_i(&mut rows)?;
     Ok(Reproduced {
         table: TableResult {
             id: "appendix-i".into(),
@@ -978,7 +980,7 @@ pub fn appendix_vi() -> Result<Reproduced, ReproduceError> {
         c("J5")?,
     );
     let acc = Accuracy::new(VI_TOL).map_err(|e| model_err("accuracy", e))?;
-    let rows: Vec<Row> = (0..t.rows.len())
+    let mut rows: Vec<Row> = (0..t.rows.len())
         .into_par_iter()
         .map(|i| {
             let (k, j3, j2, printed) = (
@@ -1012,7 +1014,7 @@ pub fn appendix_vi() -> Result<Reproduced, ReproduceError> {
             traces.push(tr);
         }
     }
-    let figures = traces
+    let mut figures = traces
         .par_iter()
         .map(|tr| {
             let idx: Vec<usize> = (0..t.rows.len()).filter(|&i| t.str(i, ct) == tr).collect();
@@ -1065,6 +1067,8 @@ pub fn appendix_vi() -> Result<Reproduced, ReproduceError> {
             })
         })
         .collect::<Result<Vec<Figure>, ReproduceError>>()?;
+    crate::thermal::attach_appendix_vi(&mut rows)?;
+    crate::thermal::appendix_vi_series(&mut figures)?;
     Ok(Reproduced {
         table: TableResult {
             id: "appendix-vi".into(),
@@ -1167,6 +1171,8 @@ pub fn appendix_vii_a() -> Result<Reproduced, ReproduceError> {
             ),
         });
     }
+    crate::thermal::attach_appendix_vii_a(&mut rows)?;
+    crate::thermal::appendix_vii_a_series(&mut figures)?;
     Ok(Reproduced {
         table: TableResult {
             id: "appendix-vii-a".into(),
@@ -1304,6 +1310,8 @@ pub fn appendix_vii_b() -> Result<Reproduced, ReproduceError> {
             series,
         });
     }
+    crate::thermal::attach_appendix_vii_b(&mut rows)?;
+    crate::thermal::appendix_vii_b_series(&mut figures)?;
     Ok(Reproduced {
         table: TableResult {
             id: "appendix-vii-b".into(),

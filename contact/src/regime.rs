@@ -1,0 +1,74 @@
+//! The regime of App. IV figure 14 (regions I–III) and the inverse of the
+//! zero-spin traction function ψ.
+
+use std::f64::consts::PI;
+
+use traction_rheology::Inputs;
+
+use crate::contact::Branch;
+use crate::{ContactError, Model, REGIME_TOLERANCE, Regime, TractionContact};
+
+impl TractionContact {
+    /// Regions I–III of App. IV figure 14 by the 5 % criterion (crate docs).
+    pub(crate) fn classify(&self, k: f64, br: &Branch) -> Result<Regime, ContactError> {
+        let [j1, j2, j3] = br.j;
+        let [j4, j5, j6] = br.out;
+        if j3 == 0.0 {
+            return Ok(Regime::ElasticWithoutSpin);
+        }
+        // Region I: slip increase over the zero-spin master curve ≤ 5 %.
+        let s_act = (2.0 / 3.0) * j1.hypot(j2) / k.sqrt();
+        let s_need = inverse_psi(j4.hypot(j5));
+        if s_act <= (1.0 + REGIME_TOLERANCE) * s_need {
+            return Ok(Regime::ElasticWithoutSpin);
+        }
+        // Region III: the rigid/plastic solution at the same J's within 5 %.
+        let rp = if self.map_applies() {
+            self.with_map(|m| m.rigid_plastic(&Inputs::new(k, j1, j2, j3)?))?
+        } else {
+            let inp = Inputs::new(k, j1, j2, j3)?;
+            traction_rheology::evaluate(&inp, Model::RigidPlastic, self.options().accuracy)?
+        };
+        let d = (j4 - rp.j4).hypot(j5 - rp.j5).hypot(j6 - rp.j6);
+        let r = rp.j4.hypot(rp.j5).hypot(rp.j6);
+        Ok(if d <= REGIME_TOLERANCE * r {
+            Regime::RigidPlastic
+        } else {
+            Regime::ElasticWithSpin
+        })
+    }
+}
+
+/// Inverse of the zero-spin traction function ψ(S) of App. V eq. 22 for
+/// 0 ≤ T: with S = tan φ, πψ = 2φ + sin 2φ (monotone), Newton on φ with
+/// bisection safeguard; `f64::INFINITY` for T ≥ 1.
+pub fn inverse_psi(t: f64) -> f64 {
+    if t.is_nan() || t <= 0.0 {
+        return 0.0;
+    }
+    if t >= 1.0 {
+        return f64::INFINITY;
+    }
+    let target = PI * t;
+    let (mut lo, mut hi) = (0.0_f64, PI / 2.0);
+    let mut phi = 0.25 * target; // exact slope at 0: d(2φ+sin2φ)/dφ = 4
+    for _ in 0..60 {
+        let f = 2.0 * phi + (2.0 * phi).sin() - target;
+        if f > 0.0 {
+            hi = phi;
+        } else {
+            lo = phi;
+        }
+        let d = 4.0 * phi.cos().powi(2);
+        let mut next = phi - f / d;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        if (next - phi).abs() <= 1e-15 * phi.max(1e-300) {
+            phi = next;
+            break;
+        }
+        phi = next;
+    }
+    phi.tan()
+}

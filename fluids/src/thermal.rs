@@ -1,0 +1,92 @@
+//! Thermal and film properties of the report fluids (`data/thermal_properties.csv`)
+//! for the thermal contact model: inlet viscosity η₀(θ), pressure–viscosity
+//! coefficient α (Hamrock–Dowson film thickness), fluid conductivity k_f and
+//! the temperature coefficients of μ and m. Sources in the data file's header.
+
+use crate::{FluidError, FluidName};
+
+const THERMAL_CSV: &str = include_str!("../data/thermal_properties.csv");
+
+/// Thermal and film properties of a report fluid (SI units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ThermalProperties {
+    /// Dynamic viscosity at 40 °C, Pa·s.
+    pub viscosity_40c: f64,
+    /// Dynamic viscosity at 100 °C, Pa·s.
+    pub viscosity_100c: f64,
+    /// Pressure–viscosity coefficient α, 1/Pa.
+    pub pressure_viscosity: f64,
+    /// Thermal conductivity k_f, W/(m·K).
+    pub conductivity: f64,
+    /// β_μ = −d ln μ/dθ, 1/K.
+    pub mu_coefficient: f64,
+    /// β_m = −d ln m/dθ, 1/K.
+    pub slope_coefficient: f64,
+}
+
+impl ThermalProperties {
+    /// The properties of a report fluid from `data/thermal_properties.csv`.
+    pub fn of(name: FluidName) -> Result<ThermalProperties, FluidError> {
+        let bad = |line: usize, message: String| FluidError::Data {
+            file: "thermal_properties.csv",
+            line,
+            message,
+        };
+        for (no, line) in THERMAL_CSV.lines().enumerate() {
+            let no = no + 1;
+            let line = line.trim();
+            if line.is_empty() || line.starts_with('#') || line.starts_with("fluid,") {
+                continue;
+            }
+            let f: Vec<&str> = line.split(',').collect();
+            if f.len() != 7 {
+                return Err(bad(no, format!("expected 7 fields in `{line}`")));
+            }
+            if f[0] != name.slug() {
+                continue;
+            }
+            let mut v = [0.0; 6];
+            for (i, s) in f[1..].iter().enumerate() {
+                v[i] = s
+                    .trim()
+                    .parse()
+                    .map_err(|_| bad(no, format!("`{s}` is not a number")))?;
+            }
+            return Ok(ThermalProperties {
+                viscosity_40c: v[0],
+                viscosity_100c: v[1],
+                pressure_viscosity: v[2],
+                conductivity: v[3],
+                mu_coefficient: v[4],
+                slope_coefficient: v[5],
+            });
+        }
+        Err(bad(0, format!("no row for {}", name.slug())))
+    }
+
+    /// Inlet viscosity at θ (°C), Pa·s: ln η linear in θ through the 40 °C and
+    /// 100 °C values (Reynolds' law; extrapolated outside, always > 0).
+    pub fn viscosity(&self, theta_celsius: f64) -> f64 {
+        let s = (self.viscosity_100c / self.viscosity_40c).ln() / 60.0;
+        self.viscosity_40c * (s * (theta_celsius - 40.0)).exp()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn both_fluids_have_physical_properties() {
+        for n in [FluidName::Santotrac50, FluidName::Tdf88] {
+            let p = ThermalProperties::of(n).unwrap();
+            assert!(p.viscosity_40c > p.viscosity_100c && p.viscosity_100c > 0.0);
+            assert!(p.pressure_viscosity > 5e-9 && p.pressure_viscosity < 5e-8);
+            assert!(p.conductivity > 0.05 && p.conductivity < 0.3);
+            assert!(p.mu_coefficient >= 0.0 && p.mu_coefficient < 0.1);
+            // The interpolation passes through both data points.
+            assert!((p.viscosity(40.0) / p.viscosity_40c - 1.0).abs() < 1e-12);
+            assert!((p.viscosity(100.0) / p.viscosity_100c - 1.0).abs() < 1e-12);
+        }
+    }
+}

@@ -1,0 +1,468 @@
+//! The thermal contact (traction-contact `Options::thermal`) against the
+//! report's measurements: the prediction of each measured point of
+//! Appendices I, VI, VII-A and VII-B from dimensional inputs (disc radii of
+//! Table 2-1, Hertz load at the printed P0, speeds, spin from the tilt angle,
+//! inlet temperature), the report's m and μ of each trace at the inlet
+//! temperature, and ONE thermal parameter set per fluid
+//! (`fluids/data/thermal_properties.csv`). Each function returns the
+//! predictions in the table's own units and row order ([`crate::Row::thermal`]),
+//! and thermal series for the figures.
+
+use rayon::prelude::*;
+use traction_contact::{
+    Body, Evaluation, Fluid, OperatingState, Options, Thermal, TractionContact,
+};
+use traction_fluids::FluidName;
+use traction_kinematics::tilted_disc_spin_per_speed;
+
+use crate::data::{APPENDIX_VI, APPENDIX_VII_A, APPENDIX_VII_B, DataTable};
+use crate::tables::{Figure, Series, Style};
+use crate::{ReproduceError, Row};
+
+/// Legend of the thermal series in the figures.
+pub const SERIES_NAME: &str = "thermal J+T (one parameter set per fluid)";
+
+fn err(what: &str, e: impl std::fmt::Display) -> ReproduceError {
+    ReproduceError::Model(format!("{what} (thermal): {e}"))
+}
+
+/// Low-speed machine discs of Table 2-1 by k (the k = 5 Ry from Table 2-4).
+fn low_speed(k: f64) -> Option<(Body, Body)> {
+    let ry = match k {
+        0.5 => 4.3e-3,
+        1.0 => 12.5e-3,
+        2.0 => 36.5e-3,
+        5.0 => 150.4e-3,
+        _ => return None,
+    };
+    Some((Body::steel(25e-3, ry), Body::steel(25e-3, f64::INFINITY)))
+}
+
+/// High-speed machine discs of Table 2-1 by k.
+fn high_speed(k: f64) -> Option<(Body, Body)> {
+    let ry = match k {
+        1.0 => 22.6e-3,
+        5.0 => 270e-3,
+        _ => return None,
+    };
+    Some((Body::steel(33e-3, ry), Body::steel(71.4e-3, f64::INFINITY)))
+}
+
+/// Options of every thermal prediction: the report's isothermal defaults plus
+/// the thermal model with the fluid's own properties (optionally another
+/// β_μ, for identification studies).
+pub fn options(mu_coefficient: Option<f64>) -> Options {
+    Options {
+        classify_regime: false,
+        thermal: Some(Thermal {
+            mu_coefficient,
+            ..Thermal::default()
+        }),
+        ..Options::default()
+    }
+}
+
+/// The contact of a report fluid with the trace's m, μ at the inlet.
+fn contact(
+    bodies: &(Body, Body),
+    fluid: FluidName,
+    m: f64,
+    mu: f64,
+    beta: Option<[f64; 2]>,
+) -> Result<TractionContact, ReproduceError> {
+    let opts = options(beta.map(|b| match fluid {
+        FluidName::Santotrac50 => b[0],
+        FluidName::Tdf88 => b[1],
+    }));
+    let rule = traction_contact::EnvelopeRule::Clamp;
+    let f = match fluid {
+        FluidName::Santotrac50 => Fluid::santotrac_50(rule),
+        FluidName::Tdf88 => Fluid::tdf_88(rule),
+    }
+    .and_then(|f| f.with_inlet_values(m, mu))
+    .map_err(|e| err("fluid", e))?;
+    TractionContact::new(&bodies.0, &bodies.1, f, opts).map_err(|e| err("contact", e))
+}
+
+fn evaluate(
+    c: &TractionContact,
+    load: f64,
+    u: f64,
+    du: f64,
+    dv: f64,
+    w: f64,
+    theta: f64,
+) -> Result<Evaluation, ReproduceError> {
+    let s = OperatingState::builder()
+        .load(load)
+        .rolling_speed(u)
+        .slip(du)
+        .side_slip(dv)
+        .spin(w)
+        .inlet_temperature_celsius(theta)
+        .build()
+        .map_err(|e| err("state", e))?;
+    c.evaluate(&s).map_err(|e| err("evaluation", e))
+}
+
+/// The Appendix VI rig of a trace: tilt (deg), Ry (m), offset (m), discs,
+/// P0 (Pa), inlet temperature (°C), fluid.
+type Rig = (f64, f64, f64, (Body, Body), f64, f64, FluidName);
+
+/// The rig of an Appendix VI trace.
+fn vi_rig(trace: &str) -> Result<Rig, ReproduceError> {
+    let hs = |k| high_speed(k).ok_or_else(|| err("rig", "no disc"));
+    Ok(match trace {
+        "79072704" => (
+            30.0,
+            270e-3,
+            -205e-3,
+            hs(5.0)?,
+            1.45e9,
+            73.0,
+            FluidName::Santotrac50,
+        ),
+        "79100403" | "79100403-U20" => (
+            15.0,
+            270e-3,
+            -230e-3,
+            hs(5.0)?,
+            1.0e9,
+            50.0,
+            FluidName::Tdf88,
+        ),
+        "79072601" => (
+            15.0,
+            22.6e-3,
+            10.4e-3,
+            hs(1.0)?,
+            1.22e9,
+            32.5,
+            FluidName::Santotrac50,
+        ),
+        other => return Err(err("Appendix VI", format!("unknown trace {other}"))),
+    })
+}
+
+/// One Appendix VI point: (Fy/N) predicted at side slip ratio `dv_u`.
+fn vi_point(
+    trace: &str,
+    positive: bool,
+    m: f64,
+    mu: f64,
+    speed: f64,
+    dv_u: f64,
+    beta: Option<[f64; 2]>,
+) -> Result<f64, ReproduceError> {
+    let (alpha, ry, e_off, bodies, p0, theta, fluid) = vi_rig(trace)?;
+    let w_per_u = tilted_disc_spin_per_speed(alpha.to_radians(), ry, e_off)
+        .map_err(|e| err("Appendix VI spin", e))?;
+    let c = contact(&bodies, fluid, m, mu, beta)?;
+    let load = c.geometry().at_p0(p0).map_err(|e| err("Hertz", e))?.load;
+    let sign = if positive { 1.0 } else { -1.0 };
+    let e = evaluate(
+        &c,
+        load,
+        sign * speed,
+        0.0,
+        dv_u * speed,
+        sign * w_per_u * speed,
+        theta,
+    )?;
+    Ok(e.traction_y)
+}
+
+/// Appendix VI: thermal J5 = (Fy/Fz)/μ_spin per data row (the table's
+/// measured normalisation), and per trace the (ΔV/U, Fy/Fz) line.
+pub fn appendix_vi(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
+    let t = DataTable::parse("appendix_vi_spin_traces.csv", APPENDIX_VI)?;
+    let c = |n| t.col(n);
+    let (ct, cm, cmu, cms, cu, cdir, cdv) = (
+        c("trace")?,
+        c("m")?,
+        c("mu")?,
+        c("mu_spin")?,
+        c("U")?,
+        c("direction")?,
+        c("dV_U")?,
+    );
+    (0..t.rows.len())
+        .into_par_iter()
+        .map(|i| {
+            let fy = vi_point(
+                t.str(i, ct),
+                t.str(i, cdir) == "positive",
+                t.num(i, cm)?,
+                t.num(i, cmu)?,
+                t.num(i, cu)?,
+                t.num(i, cdv)?,
+                beta,
+            )?;
+            Ok(fy / t.num(i, cms)?)
+        })
+        .collect()
+}
+
+/// Thermal lines for the Appendix VI figures (one per trace, both rolling
+/// directions: negative ΔV/U is the reversed run, as the report plots it).
+pub fn appendix_vi_series(figures: &mut [Figure]) -> Result<(), ReproduceError> {
+    let t = DataTable::parse("appendix_vi_spin_traces.csv", APPENDIX_VI)?;
+    let c = |n| t.col(n);
+    let (ct, cm, cmu, cu, cdv) = (c("trace")?, c("m")?, c("mu")?, c("U")?, c("dV_U")?);
+    let mut traces: Vec<usize> = Vec::new();
+    for i in 0..t.rows.len() {
+        if !traces.iter().any(|&j| t.str(j, ct) == t.str(i, ct)) {
+            traces.push(i);
+        }
+    }
+    for i0 in traces {
+        let tr = t.str(i0, ct);
+        let (m, mu, speed) = (t.num(i0, cm)?, t.num(i0, cmu)?, t.num(i0, cu)?);
+        let mut dmax = 0.0_f64;
+        for i in (0..t.rows.len()).filter(|&i| t.str(i, ct) == tr) {
+            dmax = dmax.max(t.num(i, cdv)?.abs());
+        }
+        let n = 20;
+        let line: Vec<(f64, f64)> = (-n..=n)
+            .into_par_iter()
+            .map(|j| {
+                let dv = dmax * j as f64 / n as f64;
+                // The report's figures: the negative-direction run at −ΔV/U.
+                let positive = j >= 0;
+                Ok((dv, vi_point(tr, positive, m, mu, speed, dv, None)?))
+            })
+            .collect::<Result<_, ReproduceError>>()?;
+        let tag = format!("(trace {tr},");
+        if let Some(f) = figures.iter_mut().find(|f| f.title.contains(&tag)) {
+            f.series.push(Series {
+                name: SERIES_NAME.into(),
+                style: Style::Line,
+                color: 3,
+                points: line,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Table 4-2 / 4-3 Hertz pressure (Pa) by k (U = 20 m/s, θ = 70 °C).
+fn table_4_2_p0(k: f64) -> Result<f64, ReproduceError> {
+    Ok(match k {
+        0.5 => 2.53e9,
+        1.0 => 1.96e9,
+        2.0 => 1.45e9,
+        5.0 => 1.22e9,
+        _ => return Err(err("Table 4-2", format!("k = {k}"))),
+    })
+}
+
+/// One low-speed-machine point of VII-A/B (Santotrac 50, 20 m/s, 70 °C).
+fn vii_point(
+    k: f64,
+    m: f64,
+    mu: f64,
+    du_u: f64,
+    dv_u: f64,
+    beta: Option<[f64; 2]>,
+) -> Result<Evaluation, ReproduceError> {
+    let bodies = low_speed(k).ok_or_else(|| err("VII", format!("no disc for k = {k}")))?;
+    let c = contact(&bodies, FluidName::Santotrac50, m, mu, beta)?;
+    let load = c
+        .geometry()
+        .at_p0(table_4_2_p0(k)?)
+        .map_err(|e| err("Hertz", e))?
+        .load;
+    evaluate(&c, load, 20.0, du_u * 20.0, dv_u * 20.0, 0.0, 70.0)
+}
+
+/// Appendix VII-A: thermal J5 = (Fy/N)/μ per data row.
+pub fn appendix_vii_a(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
+    let t = DataTable::parse("appendix_vii_a_side_slip.csv", APPENDIX_VII_A)?;
+    let c = |n| t.col(n);
+    let (ck, cm, cmu, cxf, ccm) = (c("k")?, c("m")?, c("mu")?, c("xf")?, c("cm")?);
+    (0..t.rows.len())
+        .into_par_iter()
+        .map(|i| {
+            let mu = t.num(i, cmu)?;
+            let dv_u = t.num(i, cxf)? * t.num(i, ccm)?;
+            let e = vii_point(t.num(i, ck)?, t.num(i, cm)?, mu, 0.0, dv_u, beta)?;
+            Ok(e.traction_y / mu)
+        })
+        .collect()
+}
+
+/// Thermal lines of the VII-A figures (one per k: Fy/N against ΔV/U).
+pub fn appendix_vii_a_series(figures: &mut [Figure]) -> Result<(), ReproduceError> {
+    let t = DataTable::parse("appendix_vii_a_side_slip.csv", APPENDIX_VII_A)?;
+    let c = |n| t.col(n);
+    let (ck, cm, cmu, cdv) = (c("k")?, c("m")?, c("mu")?, c("dV_U")?);
+    for f in figures.iter_mut() {
+        let Some(i0) = (0..t.rows.len()).find(|&i| {
+            t.num(i, ck)
+                .is_ok_and(|k| f.title.contains(&format!("k = {k} ")))
+        }) else {
+            continue;
+        };
+        let (k, m, mu) = (t.num(i0, ck)?, t.num(i0, cm)?, t.num(i0, cmu)?);
+        let mut dmax = 0.0_f64;
+        for i in (0..t.rows.len()).filter(|&i| t.num(i, ck).ok() == Some(k)) {
+            dmax = dmax.max(t.num(i, cdv)?);
+        }
+        let line = (0..=40)
+            .into_par_iter()
+            .map(|j| {
+                let dv = dmax * j as f64 / 40.0;
+                Ok((dv, vii_point(k, m, mu, 0.0, dv, None)?.traction_y))
+            })
+            .collect::<Result<_, ReproduceError>>()?;
+        f.series.push(Series {
+            name: SERIES_NAME.into(),
+            style: Style::Line,
+            color: 3,
+            points: line,
+        });
+    }
+    Ok(())
+}
+
+/// The side-slip ratio of a VII-B set from its printed J2 (eq. 11 inverted
+/// with the set's m, μ and the nominal k).
+fn vii_b_dv_u(j2: f64, m: f64, mu: f64, k: f64) -> f64 {
+    // The report prints "0.0001" for no side slip.
+    if j2 <= 1e-4 {
+        return 0.0;
+    }
+    j2 / (3.0 * std::f64::consts::PI / 8.0 * (m / mu) * k.sqrt())
+}
+
+/// Appendix VII-B: thermal J4 = (Fx/N)/μ per data row.
+pub fn appendix_vii_b(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
+    let t = DataTable::parse("appendix_vii_b_combined_slip.csv", APPENDIX_VII_B)?;
+    let c = |n| t.col(n);
+    let (ck, cm, cmu, cxf, ccm, cj2) = (c("k")?, c("m")?, c("mu")?, c("xf")?, c("cm")?, c("J2")?);
+    (0..t.rows.len())
+        .into_par_iter()
+        .map(|i| {
+            let (k, m, mu) = (t.num(i, ck)?, t.num(i, cm)?, t.num(i, cmu)?);
+            let du_u = t.num(i, cxf)? * t.num(i, ccm)?;
+            let dv_u = vii_b_dv_u(t.num(i, cj2)?, m, mu, k);
+            let e = vii_point(k, m, mu, du_u, dv_u, beta)?;
+            Ok(e.traction_x / mu)
+        })
+        .collect()
+}
+
+/// Thermal lines of the VII-B figures (per k and set: Fx/N against ΔU/U).
+pub fn appendix_vii_b_series(figures: &mut [Figure]) -> Result<(), ReproduceError> {
+    let t = DataTable::parse("appendix_vii_b_combined_slip.csv", APPENDIX_VII_B)?;
+    let c = |n| t.col(n);
+    let (ck, cm, cmu, cset, cdu, cj2) =
+        (c("k")?, c("m")?, c("mu")?, c("set")?, c("dU_U")?, c("J2")?);
+    for f in figures.iter_mut() {
+        let rows: Vec<usize> = (0..t.rows.len())
+            .filter(|&i| {
+                t.num(i, ck)
+                    .is_ok_and(|k| f.title.contains(&format!("k = {k} ")))
+            })
+            .collect();
+        let mut sets: Vec<String> = Vec::new();
+        for &i in &rows {
+            let s = t.str(i, cset).to_string();
+            if !sets.contains(&s) {
+                sets.push(s);
+            }
+        }
+        for (si, set) in sets.iter().enumerate() {
+            let sidx: Vec<usize> = rows
+                .iter()
+                .copied()
+                .filter(|&i| t.str(i, cset) == set)
+                .collect();
+            let i0 = sidx[0];
+            let (k, m, mu) = (t.num(i0, ck)?, t.num(i0, cm)?, t.num(i0, cmu)?);
+            let dv_u = vii_b_dv_u(t.num(i0, cj2)?, m, mu, k);
+            let mut dmax = 0.0_f64;
+            for &i in &sidx {
+                dmax = dmax.max(t.num(i, cdu)?);
+            }
+            let line = (0..=30)
+                .into_par_iter()
+                .map(|j| {
+                    let du = dmax * j as f64 / 30.0;
+                    Ok((du, vii_point(k, m, mu, du, dv_u, None)?.traction_x))
+                })
+                .collect::<Result<_, ReproduceError>>()?;
+            f.series.push(Series {
+                name: format!("set {set}: {SERIES_NAME}"),
+                style: Style::Crosses,
+                color: si,
+                points: line,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Appendix I: thermal J5 = (Fy/Fz)/μ per data point (traces in file order).
+/// The rig of each trace is the machine whose Hertz load at the printed P0 is
+/// closest to the printed load (low-speed k = 0.5..5 or high-speed k = 1, 5).
+pub fn appendix_i(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
+    let pts = traction_fluids::appendix_i_traces().map_err(|e| err("Appendix I data", e))?;
+    pts.par_iter()
+        .map(|p| {
+            let fluid = if p.fluid.contains("TDF") {
+                FluidName::Tdf88
+            } else {
+                FluidName::Santotrac50
+            };
+            let p0 = p.p0_gpa * 1e9;
+            let mut best: Option<(f64, TractionContact, f64)> = None;
+            for bodies in [low_speed(p.k), high_speed(p.k)].into_iter().flatten() {
+                let c = contact(&bodies, fluid, p.m, p.mu, beta)?;
+                let load = c.geometry().at_p0(p0).map_err(|e| err("Hertz", e))?.load;
+                let d = (load / p.fz_n).ln().abs();
+                if best.as_ref().is_none_or(|b| d < b.0) {
+                    best = Some((d, c, load));
+                }
+            }
+            let (_, c, load) = best.ok_or_else(|| err("Appendix I", "no rig"))?;
+            let u = p.speed_m_s;
+            let e = evaluate(&c, load, u, 0.0, p.dv_over_u * u, 0.0, p.temp_celsius)?;
+            Ok(e.traction_y / p.mu)
+        })
+        .collect()
+}
+
+/// Store predictions in the rows (same order), checking the count.
+fn attach(rows: &mut [Row], values: Vec<f64>, what: &str) -> Result<(), ReproduceError> {
+    if values.len() != rows.len() {
+        return Err(err(
+            what,
+            format!("{} predictions for {} rows", values.len(), rows.len()),
+        ));
+    }
+    for (r, v) in rows.iter_mut().zip(values) {
+        r.thermal = Some(v);
+    }
+    Ok(())
+}
+
+/// [`appendix_i`] into the Appendix I rows.
+pub fn attach_appendix_i(rows: &mut [Row]) -> Result<(), ReproduceError> {
+    attach(rows, appendix_i(None)?, "Appendix I")
+}
+
+/// [`appendix_vi`] into the Appendix VI rows.
+pub fn attach_appendix_vi(rows: &mut [Row]) -> Result<(), ReproduceError> {
+    attach(rows, appendix_vi(None)?, "Appendix VI")
+}
+
+/// [`appendix_vii_a`] into the Appendix VII-A rows.
+pub fn attach_appendix_vii_a(rows: &mut [Row]) -> Result<(), ReproduceError> {
+    attach(rows, appendix_vii_a(None)?, "Appendix VII-A")
+}
+
+/// [`appendix_vii_b`] into the Appendix VII-B rows.
+pub fn attach_appendix_vii_b(rows: &mut [Row]) -> Result<(), ReproduceError> {
+    attach(rows, appendix_vii_b(None)?, "Appendix VII-B")
+}
