@@ -1,7 +1,7 @@
 //! The FMU through its C functions: a random call-sequence fuzz, NULL
 //! pointers, FMU state get/set/serialize, and independent instances on
 //! threads.
-#![allow(unsafe_code, missing_docs)]
+#![allow(unsafe_code, missing_docs, clippy::unwrap_used)]
 
 use std::ffi::{CString, c_char, c_void};
 use std::ptr::{null, null_mut};
