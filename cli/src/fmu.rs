@@ -1,15 +1,22 @@
 //! `traction fmu`: build and package the FMI 2.0 co-simulation FMU.
 //!
 //! `traction fmu build --out TractionContact.fmu` runs
-//! `cargo build --release -p traction-fmu --lib` in this workspace and packs
-//! the shared library with the generated modelDescription.xml. With
-//! `--library PATH` it packs an already built `libtraction_fmu.so` instead
-//! (for a `traction` binary used outside the source tree).
+//! `cargo build --release -p traction-fmu --lib` in this workspace for
+//! linux64 and, cross-compiled, for win64 (`--target x86_64-pc-windows-gnu`
+//! with the MinGW-w64 linker `x86_64-w64-mingw32-gcc` unless
+//! `CARGO_TARGET_X86_64_PC_WINDOWS_GNU_LINKER` names another), and packs both
+//! shared libraries with the generated modelDescription.xml. `--platform`
+//! chooses the platforms (repeatable; default both). With `--library PATH`
+//! (linux64) and/or `--win64-library PATH` it packs already built libraries
+//! instead (for a `traction` binary used outside the source tree); then only
+//! the given ones are packed unless `--platform` asks for more.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use clap::{Args, Subcommand};
+
+use traction_fmu::package::Platform;
 
 use crate::error::CliError;
 
@@ -33,11 +40,23 @@ struct BuildArgs {
     /// Where to write the FMU (e.g. TractionContact.fmu).
     #[arg(long)]
     out: PathBuf,
-    /// Pack this prebuilt library instead of building it
+    /// Which FMU: the traction contact or the toroidal variator (ToroidalVariator.fmu).
+    #[arg(long, value_enum, default_value_t = crate::fmu_variator::FmuModel::Contact)]
+    model: crate::fmu_variator::FmuModel,
+    /// Pack this prebuilt linux64 library instead of building it
     /// (`cargo build --release -p traction-fmu --lib` makes
     /// `<target-dir>/release/libtraction_fmu.so`).
     #[arg(long)]
     library: Option<PathBuf>,
+    /// Pack this prebuilt win64 library instead of building it (`cargo
+    /// build --release -p traction-fmu --lib --target x86_64-pc-windows-gnu`
+    /// makes `<target-dir>/x86_64-pc-windows-gnu/release/traction_fmu.dll`).
+    #[arg(long)]
+    win64_library: Option<PathBuf>,
+    /// A platform to pack: linux64 or win64 (repeatable; default: both, or
+    /// only those of --library/--win64-library when given).
+    #[arg(long = "platform")]
+    platforms: Vec<Platform>,
 }
 
 /// Runs `traction fmu ...`.
@@ -49,13 +68,52 @@ pub fn run(args: FmuArgs) -> Result<(), CliError> {
             print!("{xml}");
             Ok(())
         }
+        FmuCommand::Build(b) if b.model == crate::fmu_variator::FmuModel::Variator => {
+            if b.win64_library.is_some() || b.platforms.iter().any(|p| *p != Platform::Linux64) {
+                return Err(CliError::Usage(
+                    "--model variator: ToroidalVariator.fmu is built for linux64 only".into(),
+                ));
+            }
+            crate::fmu_variator::build(&b.out, b.library)
+        }
         FmuCommand::Build(b) => {
-            let library = match b.library {
-                Some(l) => l,
-                None => build_library()?,
+            let prebuilt = [
+                (Platform::Linux64, b.library),
+                (Platform::Win64, b.win64_library),
+            ];
+            let platforms: Vec<Platform> = if !b.platforms.is_empty() {
+                b.platforms
+            } else if prebuilt.iter().any(|p| p.1.is_some()) {
+                prebuilt
+                    .iter()
+                    .filter(|p| p.1.is_some())
+                    .map(|p| p.0)
+                    .collect()
+            } else {
+                Platform::ALL.to_vec()
             };
-            traction_fmu::package::write_fmu(&library, &b.out).map_err(CliError::model)?;
-            eprintln!("wrote {} (library {})", b.out.display(), library.display());
+            let mut libraries = Vec::new();
+            for platform in Platform::ALL {
+                if !platforms.contains(&platform) {
+                    continue;
+                }
+                let given = prebuilt
+                    .iter()
+                    .find(|p| p.0 == platform)
+                    .and_then(|p| p.1.clone());
+                let library = match given {
+                    Some(l) => l,
+                    None => build_library(platform)?,
+                };
+                libraries.push((platform, library));
+            }
+            let binaries: Vec<(Platform, &Path)> =
+                libraries.iter().map(|(p, l)| (*p, l.as_path())).collect();
+            traction_fmu::package::write_fmu_for(&binaries, &b.out).map_err(CliError::model)?;
+            for (platform, library) in &libraries {
+                eprintln!("packed {} ({})", platform.archive_path(), library.display());
+            }
+            eprintln!("wrote {}", b.out.display());
             Ok(())
         }
     }
@@ -68,30 +126,62 @@ fn workspace_root() -> PathBuf {
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
 }
 
-fn build_library() -> Result<PathBuf, CliError> {
+/// The MinGW-w64 linker of the win64 cross build (Debian `gcc-mingw-w64-x86-64`).
+const MINGW_LINKER: &str = "x86_64-w64-mingw32-gcc";
+
+fn build_library(platform: Platform) -> Result<PathBuf, CliError> {
     let root = workspace_root();
-    let hint = "build it with `cargo build --release -p traction-fmu --lib` in the traction workspace and pass \
-                `--library <target-dir>/release/libtraction_fmu.so`";
+    let file = platform.cargo_library_name();
+    let target_args = platform
+        .rust_target()
+        .map(|t| format!(" --target {t}"))
+        .unwrap_or_default();
+    let mut hint = format!(
+        "build it with `cargo build --release -p traction-fmu --lib{target_args}` in the traction workspace and pass `--{}library <target-dir>/{}release/{file}`",
+        if platform == Platform::Win64 {
+            "win64-"
+        } else {
+            ""
+        },
+        platform
+            .rust_target()
+            .map(|t| format!("{t}/"))
+            .unwrap_or_default(),
+    );
+    if platform == Platform::Win64 {
+        hint.push_str(
+            ", install the cross toolchain (`rustup target add x86_64-pc-windows-gnu`, Debian `gcc-mingw-w64-x86-64`; scripts/fmu_setup.sh does both), or pack linux64 only with `--platform linux64`",
+        );
+    }
     if !root.join("fmu").join("Cargo.toml").is_file() {
         return Err(CliError::Usage(format!(
-            "the traction workspace {} is not available to build the FMU library; {hint}",
-            root.display()
+            "the traction workspace {} is not available to build the {} FMU library; {hint}",
+            root.display(),
+            platform.folder()
         )));
     }
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut command = Command::new(&cargo);
+    command.args([
+        "build",
+        "--release",
+        "-p",
+        "traction-fmu",
+        "--lib",
+        "--message-format=json-render-diagnostics",
+    ]);
+    if let Some(target) = platform.rust_target() {
+        command.args(["--target", target]);
+        let linker = "CARGO_TARGET_X86_64_PC_WINDOWS_GNU_LINKER";
+        if std::env::var_os(linker).is_none() {
+            command.env(linker, MINGW_LINKER);
+        }
+    }
     eprintln!(
-        "running cargo build --release -p traction-fmu --lib in {}",
+        "running cargo build --release -p traction-fmu --lib{target_args} in {}",
         root.display()
     );
-    let output = Command::new(&cargo)
-        .args([
-            "build",
-            "--release",
-            "-p",
-            "traction-fmu",
-            "--lib",
-            "--message-format=json-render-diagnostics",
-        ])
+    let output = command
         .current_dir(&root)
         .stderr(std::process::Stdio::inherit())
         .output()
@@ -101,22 +191,25 @@ fn build_library() -> Result<PathBuf, CliError> {
         })?;
     if !output.status.success() {
         return Err(CliError::Usage(format!(
-            "cargo build of traction-fmu failed ({}); {hint}",
+            "cargo build of traction-fmu for {} failed ({}); {hint}",
+            platform.folder(),
             output.status
         )));
     }
     let stdout = String::from_utf8_lossy(&output.stdout);
-    artifact_path(&stdout)
-        .ok_or_else(|| CliError::Usage(format!("cargo did not report libtraction_fmu.so; {hint}")))
+    artifact_path(&stdout, file)
+        .ok_or_else(|| CliError::Usage(format!("cargo did not report {file}; {hint}")))
 }
 
-/// Finds the cdylib in cargo's JSON messages (`"filenames":[..., ".../libtraction_fmu.so"]`).
-fn artifact_path(json_lines: &str) -> Option<PathBuf> {
+/// Finds the cdylib `file` in cargo's JSON messages
+/// (`"filenames":[..., ".../libtraction_fmu.so"]`).
+fn artifact_path(json_lines: &str, file: &str) -> Option<PathBuf> {
+    let quoted = format!("/{file}\"");
     json_lines
         .lines()
         .filter(|l| l.contains("\"reason\":\"compiler-artifact\""))
         .find_map(|l| {
-            let end = l.find("libtraction_fmu.so\"")? + "libtraction_fmu.so".len();
+            let end = l.find(&quoted)? + quoted.len() - 1;
             let start = l[..end].rfind('"')? + 1;
             Some(PathBuf::from(&l[start..end]))
         })
@@ -131,9 +224,20 @@ mod tests {
         let msg = r#"{"reason":"compiler-artifact","filenames":["/t/release/libtraction_fmu.so","/t/release/libtraction_fmu.rlib"]}
 {"reason":"build-finished","success":true}"#;
         assert_eq!(
-            artifact_path(msg),
+            artifact_path(msg, "libtraction_fmu.so"),
             Some(PathBuf::from("/t/release/libtraction_fmu.so"))
         );
-        assert_eq!(artifact_path(r#"{"reason":"build-finished"}"#), None);
+        assert_eq!(
+            artifact_path(r#"{"reason":"build-finished"}"#, "libtraction_fmu.so"),
+            None
+        );
+        // The win64 build reports the DLL beside its import library.
+        let win = r#"{"reason":"compiler-artifact","filenames":["/t/x86_64-pc-windows-gnu/release/traction_fmu.dll","/t/x86_64-pc-windows-gnu/release/libtraction_fmu.dll.a","/t/x86_64-pc-windows-gnu/release/libtraction_fmu.rlib"]}"#;
+        assert_eq!(
+            artifact_path(win, "traction_fmu.dll"),
+            Some(PathBuf::from(
+                "/t/x86_64-pc-windows-gnu/release/traction_fmu.dll"
+            ))
+        );
     }
 }

@@ -6,13 +6,15 @@
 //! default 1). Output: the input columns followed by `J4,J5,J6,J7`.
 //! `--map` evaluates the elastic/plastic rows through one interpolation map
 //! per (k, dX, gy) (traction-rheology `map::Map`): for large batches at few
-//! geometries.
+//! geometries. Rows (or, with `--map`, the groups of one map) are evaluated
+//! in parallel on all cores.
 
 use std::collections::HashMap;
 
 use clap::{Args, ValueEnum};
+use rayon::prelude::*;
 use traction_rheology::map::Map;
-use traction_rheology::{Accuracy, Inputs, Model, evaluate};
+use traction_rheology::{Accuracy, Inputs, Model, Outputs, RheologyError, evaluate};
 
 use crate::error::CliError;
 use crate::table::{Table, TableWriter, fmt_f64, output_headers};
@@ -69,8 +71,11 @@ pub fn run(args: JtArgs) -> Result<(), CliError> {
         // The same check as the map's, reported as a usage error up front.
         Map::new(1.0, 0.0, 1.0, acc).map_err(|e| CliError::Usage(format!("--map: {e}")))?;
     }
-    let mut maps: HashMap<[u64; 3], Map> = HashMap::new();
-    let mut out = Vec::with_capacity(t.len());
+    // Parse every row first (the first bad row is reported), then evaluate
+    // in parallel: rows directly, or `--map` groups (one map per (k, dX, gy),
+    // its rows in input order) on all cores. Results depend only on the
+    // inputs, so the output does not depend on the thread count.
+    let mut rows = Vec::with_capacity(t.len());
     for row in 0..t.len() {
         let k = t.f64(row, "k")?;
         let j1 = t.f64(row, "J1")?;
@@ -89,19 +94,37 @@ pub fn run(args: JtArgs) -> Result<(), CliError> {
         let inp = Inputs::with_offset(k, j1, j2, j3, dx)
             .and_then(|i| i.with_stiffness_ratio(gy))
             .map_err(|e| t.row_error(row, e))?;
-        let o = if args.map {
-            let key = [k.to_bits(), dx.to_bits(), gy.to_bits()];
-            let map = match maps.entry(key) {
-                std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
-                std::collections::hash_map::Entry::Vacant(e) => {
-                    e.insert(Map::new(k, dx, gy, acc).map_err(|e| t.row_error(row, e))?)
-                }
-            };
-            map.evaluate(j1, j2, j3)
-        } else {
-            evaluate(&inp, model, acc)
+        rows.push((inp, model));
+    }
+    let results: Vec<Result<Outputs, RheologyError>> = if args.map {
+        let mut groups: HashMap<[u64; 3], Vec<usize>> = HashMap::new();
+        for (row, (inp, _)) in rows.iter().enumerate() {
+            let key = [inp.k.to_bits(), inp.dx.to_bits(), inp.gy.to_bits()];
+            groups.entry(key).or_default().push(row);
         }
-        .map_err(|e| t.row_error(row, e))?;
+        let groups: Vec<Vec<usize>> = groups.into_values().collect();
+        let done: Vec<Vec<(usize, Result<Outputs, RheologyError>)>> = groups
+            .par_iter()
+            .map(|g| {
+                let first = &rows[g[0]].0;
+                match Map::new(first.k, first.dx, first.gy, acc) {
+                    Ok(mut map) => g.iter().map(|&r| (r, map.evaluate(&rows[r].0))).collect(),
+                    Err(e) => g.iter().map(|&r| (r, Err(e.clone()))).collect(),
+                }
+            })
+            .collect();
+        let mut res: Vec<(usize, Result<Outputs, RheologyError>)> =
+            done.into_iter().flatten().collect();
+        res.sort_unstable_by_key(|(r, _)| *r);
+        res.into_iter().map(|(_, o)| o).collect()
+    } else {
+        rows.par_iter()
+            .map(|(inp, model)| evaluate(inp, *model, acc))
+            .collect()
+    };
+    let mut out = Vec::with_capacity(t.len());
+    for (row, o) in results.into_iter().enumerate() {
+        let o = o.map_err(|e| t.row_error(row, e))?;
         out.push([o.j4, o.j5, o.j6, o.j7]);
     }
     let mut w = TableWriter::create(&args.output, &output_headers(&t, &["J4", "J5", "J6", "J7"]))?;

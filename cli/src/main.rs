@@ -16,7 +16,9 @@ mod field;
 mod fit;
 mod fluid;
 mod fmu;
+mod fmu_variator;
 mod hertz;
+mod identify;
 mod jt;
 mod kinematics;
 mod map;
@@ -59,6 +61,8 @@ enum Command {
     Reproduce(reproduce::ReproduceArgs),
     /// J4..J7 of the J+T model over a grid of J1, J2, J3 (CSV + heat-map PNG).
     Map(map::MapArgs),
+    /// Fit model parameters (m, μ, slip offsets, ...) to measured traction curves.
+    Identify(identify::IdentifyArgs),
 }
 
 fn run(cli: Cli) -> Result<(), CliError> {
@@ -75,6 +79,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Fmu(a) => fmu::run(a),
         Command::Reproduce(a) => reproduce::run(a),
         Command::Map(a) => map::run(a),
+        Command::Identify(a) => identify::run(a),
     }
 }
 

@@ -147,7 +147,9 @@ fn bench(c: &mut Criterion) {
         })
     });
     c.bench_function("part: rheology rigid/plastic (regime), tol 1e-4", |b| {
-        b.iter(|| traction_rheology::rigid_plastic(black_box(&inp), Accuracy::default()))
+        b.iter(|| {
+            traction_rheology::evaluate(black_box(&inp), Model::RigidPlastic, Accuracy::default())
+        })
     });
     c.bench_function("build: TractionContact::new (Hertz geometry)", |b| {
         b.iter(|| {

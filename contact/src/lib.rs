@@ -891,16 +891,16 @@ impl TractionContact {
         }
         let inp = Inputs::new(k, j[0], j[1], j[2])?.with_stiffness_ratio(gy)?;
         if self.map_applies() && gy == 1.0 {
-            let o = self.with_map(|m| m.evaluate(j[0], j[1], j[2]))?;
+            let o = self.with_map(|m| m.evaluate(&inp))?;
             return Ok(Branch {
                 j,
                 out: [o.j4, o.j5, o.j6],
             });
         }
         let o = match self.options.model {
-            Model::ElasticPlastic => traction_rheology::elastic_plastic_with(
+            Model::ElasticPlastic => traction_rheology::evaluate(
                 &inp,
-                self.options.properties,
+                Model::PropertyVariation(self.options.properties),
                 self.options.accuracy,
             )?,
             model => traction_rheology::evaluate(&inp, model, self.options.accuracy)?,
@@ -1059,10 +1059,10 @@ impl TractionContact {
         }
         // Region III: the rigid/plastic solution at the same J's within 5 %.
         let rp = if self.map_applies() {
-            self.with_map(|m| m.rigid_plastic(j1, j2, j3))?
+            self.with_map(|m| m.rigid_plastic(&Inputs::new(k, j1, j2, j3)?))?
         } else {
             let inp = Inputs::new(k, j1, j2, j3)?;
-            traction_rheology::rigid_plastic(&inp, self.options.accuracy)?
+            traction_rheology::evaluate(&inp, Model::RigidPlastic, self.options.accuracy)?
         };
         let d = (j4 - rp.j4).hypot(j5 - rp.j5).hypot(j6 - rp.j6);
         let r = rp.j4.hypot(rp.j5).hypot(rp.j6);

@@ -46,7 +46,10 @@ fn zero_spin_matches_the_closed_form_exactly() {
     // Same closed form, evaluated through the contact: round-off only (1e-12).
     assert!((r.fx / (0.089 * n * j4) - 1.0).abs() < 1e-12);
     assert!((r.fy / (0.089 * n * j5) - 1.0).abs() < 1e-12);
-    assert_eq!(r.mz, 0.0);
+    // The side force's aligning moment (closed::combined_slip_torque), 1e-12.
+    let ab = c.geometry().at_load(n).map(|h| (h.a * h.b).sqrt()).unwrap();
+    let j6 = closed::combined_slip_torque(k, j1, j2);
+    assert!((r.mz / (0.089 * n * ab * j6) - 1.0).abs() < 1e-12);
     assert_eq!(r.regime, Regime::ElasticWithoutSpin);
     // Small-slip limit: Fx/N → m ΔU/U (the definition of m), 1e-4 relative at ΔU/U = 1e-7.
     let r = c.evaluate(&state(n, u, 2e-6, 0.0, 0.0)).unwrap();
@@ -205,7 +208,7 @@ fn start_up_passes_to_the_rigid_plastic_limit() {
     // crate at the same J ratios (elastic lag < 1e-3 at J ~ 1e5; tol 2e-3).
     let r = c.evaluate(&state(n, 0.0, 0.05, 0.02, 40.0)).unwrap();
     let inp = Inputs::new(r.k, r.j1, r.j2, r.j3).unwrap();
-    let rp = traction_rheology::rigid_plastic(&inp, Accuracy::default()).unwrap();
+    let rp = traction_rheology::evaluate(&inp, Model::RigidPlastic, Accuracy::default()).unwrap();
     assert!(
         (r.j4 - rp.j4).abs() < 2e-3 && (r.j5 - rp.j5).abs() < 2e-3,
         "{r:?} {rp:?}"
@@ -484,7 +487,8 @@ fn property_distribution_option() {
     let s = state(1500.0, 20.0, 0.03, -0.02, 30.0);
     let (r, r0) = (c.evaluate(&s).unwrap(), d.evaluate(&s).unwrap());
     let inp = Inputs::new(r.k, r.j1, r.j2, r.j3).unwrap();
-    let o = traction_rheology::elastic_plastic_with(&inp, props, opts.accuracy).unwrap();
+    let o =
+        traction_rheology::evaluate(&inp, Model::PropertyVariation(props), opts.accuracy).unwrap();
     assert!((o.j4 - r.j4).abs() < 1e-12 && (o.j5 - r.j5).abs() < 1e-12);
     assert!((r.j4 - r0.j4).abs() > 1e-2, "{} {}", r.j4, r0.j4);
 }

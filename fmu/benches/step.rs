@@ -28,12 +28,12 @@ fn bench(c: &mut Criterion) {
         .collect();
     let mut values = vec![0.0; outs.len()];
     for (label, spin, map) in [
+        ("with spin (20 rad/s), rheology_map on", 20.0, true),
         (
-            "with spin (20 rad/s), rheology_map on (default)",
+            "with spin (20 rad/s), rheology_map off (default)",
             20.0,
-            true,
+            false,
         ),
-        ("with spin (20 rad/s), rheology_map off", 20.0, false),
         ("without spin", 0.0, true),
     ] {
         // SAFETY: valid pointers for the lifetime of the instance.

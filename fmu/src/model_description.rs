@@ -11,11 +11,11 @@ use quick_xml::Writer;
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, Event};
 
 use crate::variables::{
-    Causality, Depends, ENUM_TYPES, Kind, REAL_TYPES, UNITS, VARIABLES, Variability,
+    Causality, ENUM_TYPES, Kind, REAL_TYPES, UNITS, VARIABLES, Variability, Variable,
 };
 
-/// The FMU's model identifier: the shared library is
-/// `binaries/linux64/TractionContact.so`.
+/// The FMU's model identifier: the shared libraries are
+/// `binaries/linux64/TractionContact.so` and `binaries/win64/TractionContact.dll`.
 pub const MODEL_IDENTIFIER: &str = "TractionContact";
 
 /// Log categories declared in the XML and accepted by fmi2SetDebugLogging.
@@ -56,11 +56,36 @@ fn real(x: f64) -> String {
     }
 }
 
+type XmlWriter = Writer<Cursor<Vec<u8>>>;
+type XmlResult = Result<(), quick_xml::Error>;
+
 fn write_xml(guid: &str) -> Result<String, quick_xml::Error> {
     let mut w = Writer::new_with_indent(Cursor::new(Vec::new()), b' ', 2);
     w.write_event(Event::Decl(BytesDecl::new("1.0", Some("UTF-8"), None)))?;
+    w.write_event(Event::Start(root_element(guid)))?;
+    write_capabilities(&mut w)?;
+    write_unit_definitions(&mut w)?;
+    write_type_definitions(&mut w)?;
+    write_log_categories(&mut w)?;
+    w.write_event(Event::Empty(
+        BytesStart::new("DefaultExperiment").with_attributes([
+            ("startTime", "0.0"),
+            ("stopTime", "1.0"),
+            ("stepSize", "0.001"),
+        ]),
+    ))?;
+    write_model_variables(&mut w)?;
+    write_model_structure(&mut w)?;
+    w.write_event(Event::End(BytesEnd::new("fmiModelDescription")))?;
+    let mut bytes = w.into_inner().into_inner();
+    bytes.push(b'\n');
+    String::from_utf8(bytes)
+        .map_err(|e| quick_xml::Error::Io(std::sync::Arc::new(std::io::Error::other(e))))
+}
+
+/// `<fmiModelDescription ...>` with the model's identity.
+fn root_element(guid: &str) -> BytesStart<'_> {
     let mut root = BytesStart::new("fmiModelDescription");
-    let n_vars = VARIABLES.len().to_string();
     let desc = concat!(
         "Lubricated rolling traction contact between two rotating bodies (J+T elastic/plastic model, ",
         "NASA report): forces, torques, spin moment and losses from load and angular speeds; ",
@@ -80,9 +105,11 @@ fn write_xml(guid: &str) -> Result<String, quick_xml::Error> {
         ("variableNamingConvention", "structured"),
         ("numberOfEventIndicators", "0"),
     ]);
-    let _ = n_vars;
-    w.write_event(Event::Start(root))?;
+    root
+}
 
+/// `<CoSimulation>`: what the binary supports.
+fn write_capabilities(w: &mut XmlWriter) -> XmlResult {
     let mut cs = BytesStart::new("CoSimulation");
     cs.extend_attributes([
         ("modelIdentifier", MODEL_IDENTIFIER),
@@ -98,32 +125,35 @@ fn write_xml(guid: &str) -> Result<String, quick_xml::Error> {
         ("providesDirectionalDerivative", "false"),
     ]);
     w.write_event(Event::Empty(cs))?;
+    Ok(())
+}
 
+/// `<UnitDefinitions>` from [`UNITS`].
+fn write_unit_definitions(w: &mut XmlWriter) -> XmlResult {
+    const BASE_UNITS: [&str; 8] = ["kg", "m", "s", "A", "K", "mol", "cd", "rad"];
     w.write_event(Event::Start(BytesStart::new("UnitDefinitions")))?;
     for u in UNITS {
         w.write_event(Event::Start(
             BytesStart::new("Unit").with_attributes([("name", u.name)]),
         ))?;
-        let names = ["kg", "m", "s", "A", "K", "mol", "cd", "rad"];
         let mut base = BytesStart::new("BaseUnit");
-        let exps: Vec<(String, String)> = names
-            .iter()
-            .zip(u.exponents)
-            .filter(|(_, e)| *e != 0)
-            .map(|(n, e)| ((*n).to_owned(), e.to_string()))
-            .collect();
-        for (n, e) in &exps {
-            base.push_attribute((n.as_str(), e.as_str()));
+        for (n, e) in BASE_UNITS.iter().zip(u.exponents) {
+            if e != 0 {
+                base.push_attribute((*n, e.to_string().as_str()));
+            }
         }
-        let offset = real(u.offset);
         if u.offset != 0.0 {
-            base.push_attribute(("offset", offset.as_str()));
+            base.push_attribute(("offset", real(u.offset).as_str()));
         }
         w.write_event(Event::Empty(base))?;
         w.write_event(Event::End(BytesEnd::new("Unit")))?;
     }
     w.write_event(Event::End(BytesEnd::new("UnitDefinitions")))?;
+    Ok(())
+}
 
+/// `<TypeDefinitions>`: the Real and Enumeration SimpleTypes.
+fn write_type_definitions(w: &mut XmlWriter) -> XmlResult {
     w.write_event(Event::Start(BytesStart::new("TypeDefinitions")))?;
     for (name, quantity, unit) in REAL_TYPES {
         w.write_event(Event::Start(
@@ -152,7 +182,11 @@ fn write_xml(guid: &str) -> Result<String, quick_xml::Error> {
         w.write_event(Event::End(BytesEnd::new("SimpleType")))?;
     }
     w.write_event(Event::End(BytesEnd::new("TypeDefinitions")))?;
+    Ok(())
+}
 
+/// `<LogCategories>` from [`LOG_CATEGORIES`].
+fn write_log_categories(w: &mut XmlWriter) -> XmlResult {
     w.write_event(Event::Start(BytesStart::new("LogCategories")))?;
     for (name, d) in LOG_CATEGORIES {
         w.write_event(Event::Empty(
@@ -160,15 +194,11 @@ fn write_xml(guid: &str) -> Result<String, quick_xml::Error> {
         ))?;
     }
     w.write_event(Event::End(BytesEnd::new("LogCategories")))?;
+    Ok(())
+}
 
-    w.write_event(Event::Empty(
-        BytesStart::new("DefaultExperiment").with_attributes([
-            ("startTime", "0.0"),
-            ("stopTime", "1.0"),
-            ("stepSize", "0.001"),
-        ]),
-    ))?;
-
+/// `<ModelVariables>`: one ScalarVariable per row of [`VARIABLES`].
+fn write_model_variables(w: &mut XmlWriter) -> XmlResult {
     w.write_event(Event::Start(BytesStart::new("ModelVariables")))?;
     for v in VARIABLES {
         let vr = v.vr.to_string();
@@ -198,98 +228,92 @@ fn write_xml(guid: &str) -> Result<String, quick_xml::Error> {
             sv.push_attribute(("initial", "exact"));
         }
         w.write_event(Event::Start(sv))?;
-        match v.kind {
-            Kind::Real {
-                declared,
-                start,
-                min,
-                max,
-            } => {
-                let unit = REAL_TYPES
-                    .iter()
-                    .find(|t| t.0 == declared)
-                    .map_or("1", |t| t.2);
-                let mut e = BytesStart::new("Real");
-                e.extend_attributes([("declaredType", declared), ("unit", unit)]);
-                let (min, max, start) = (min.map(real), max.map(real), start.map(real));
-                if let Some(m) = &min {
-                    e.push_attribute(("min", m.as_str()));
-                }
-                if let Some(m) = &max {
-                    e.push_attribute(("max", m.as_str()));
-                }
-                if let Some(s) = &start {
-                    e.push_attribute(("start", s.as_str()));
-                }
-                w.write_event(Event::Empty(e))?;
-            }
-            Kind::Enumeration { declared, start } => {
-                let mut e = BytesStart::new("Enumeration");
-                e.push_attribute(("declaredType", declared));
-                let s = start.map(|s| s.to_string());
-                if let Some(s) = &s {
-                    e.push_attribute(("start", s.as_str()));
-                }
-                w.write_event(Event::Empty(e))?;
-            }
-            Kind::Boolean { start } => {
-                let mut e = BytesStart::new("Boolean");
-                if let Some(s) = start {
-                    e.push_attribute(("start", if s { "true" } else { "false" }));
-                }
-                w.write_event(Event::Empty(e))?;
-            }
-        }
+        w.write_event(Event::Empty(type_element(v.kind)))?;
         w.write_event(Event::End(BytesEnd::new("ScalarVariable")))?;
     }
     w.write_event(Event::End(BytesEnd::new("ModelVariables")))?;
+    Ok(())
+}
 
-    // ModelStructure: 1-based indices into ModelVariables.
-    let index = |f: &dyn Fn(&crate::variables::Variable) -> bool| -> Vec<usize> {
-        VARIABLES
-            .iter()
-            .enumerate()
-            .filter(|(_, v)| f(v))
-            .map(|(i, _)| i + 1)
-            .collect()
-    };
-    let inputs = index(&|v| v.causality == Causality::Input);
-    let load = index(&|v| v.name == "normal_load");
-    let kinematic = index(&|v| {
-        v.causality == Causality::Input && v.name != "inlet_temperature" && v.name != "normal_load"
-    });
-    let join = |xs: &[usize]| {
-        xs.iter()
-            .map(usize::to_string)
-            .collect::<Vec<_>>()
-            .join(" ")
-    };
+/// The `<Real>`, `<Enumeration>` or `<Boolean>` element of a variable.
+fn type_element(kind: Kind) -> BytesStart<'static> {
+    match kind {
+        Kind::Real {
+            declared,
+            start,
+            min,
+            max,
+        } => {
+            let unit = REAL_TYPES
+                .iter()
+                .find(|t| t.0 == declared)
+                .map_or("1", |t| t.2);
+            let mut e = BytesStart::new("Real");
+            e.extend_attributes([("declaredType", declared), ("unit", unit)]);
+            for (attribute, value) in [("min", min), ("max", max), ("start", start)] {
+                if let Some(x) = value {
+                    e.push_attribute((attribute, real(x).as_str()));
+                }
+            }
+            e
+        }
+        Kind::Enumeration { declared, start } => {
+            let mut e = BytesStart::new("Enumeration");
+            e.push_attribute(("declaredType", declared));
+            if let Some(s) = start {
+                e.push_attribute(("start", s.to_string().as_str()));
+            }
+            e
+        }
+        Kind::Boolean { start } => {
+            let mut e = BytesStart::new("Boolean");
+            if let Some(s) = start {
+                e.push_attribute(("start", if s { "true" } else { "false" }));
+            }
+            e
+        }
+    }
+}
+
+/// The 1-based ModelVariables indices of the knowns an output depends on:
+/// in `<Outputs>` the inputs, in `<InitialUnknowns>` the inputs and the
+/// parameters (all `initial="exact"`, so known in Initialization Mode).
+pub fn dependencies(output: &Variable, initialization: bool) -> Vec<usize> {
+    VARIABLES
+        .iter()
+        .enumerate()
+        .filter(|(_, k)| {
+            (k.causality == Causality::Input
+                || (initialization && k.causality == Causality::Parameter))
+                && output.depends.includes(k)
+        })
+        .map(|(i, _)| i + 1)
+        .collect()
+}
+
+/// `<ModelStructure>`: every output in `<Outputs>` and `<InitialUnknowns>`.
+fn write_model_structure(w: &mut XmlWriter) -> XmlResult {
     w.write_event(Event::Start(BytesStart::new("ModelStructure")))?;
-    for section in ["Outputs", "InitialUnknowns"] {
+    for (section, initialization) in [("Outputs", false), ("InitialUnknowns", true)] {
         w.write_event(Event::Start(BytesStart::new(section)))?;
         for (i, v) in VARIABLES.iter().enumerate() {
             if v.causality != Causality::Output {
                 continue;
             }
-            let deps = match v.depends {
-                Depends::Load => join(&load),
-                Depends::Kinematic => join(&kinematic),
-                Depends::AllInputs | Depends::None => join(&inputs),
-            };
+            let deps: Vec<String> = dependencies(v, initialization)
+                .iter()
+                .map(usize::to_string)
+                .collect();
             let idx = (i + 1).to_string();
             w.write_event(Event::Empty(BytesStart::new("Unknown").with_attributes([
                 ("index", idx.as_str()),
-                ("dependencies", deps.as_str()),
+                ("dependencies", deps.join(" ").as_str()),
             ])))?;
         }
         w.write_event(Event::End(BytesEnd::new(section)))?;
     }
     w.write_event(Event::End(BytesEnd::new("ModelStructure")))?;
-    w.write_event(Event::End(BytesEnd::new("fmiModelDescription")))?;
-    let mut bytes = w.into_inner().into_inner();
-    bytes.push(b'\n');
-    String::from_utf8(bytes)
-        .map_err(|e| quick_xml::Error::Io(std::sync::Arc::new(std::io::Error::other(e))))
+    Ok(())
 }
 
 /// The GUID: `{…}` formatted FNV-1a-128 hash of the XML with an empty GUID.

@@ -1,5 +1,6 @@
-//! Packaging: the `.fmu` archive (a zip) with modelDescription.xml,
-//! `binaries/linux64/<modelIdentifier>.so` and `documentation/index.html`.
+//! Packaging: the `.fmu` archive (a zip) with modelDescription.xml, the
+//! binaries (`binaries/linux64/<modelIdentifier>.so`,
+//! `binaries/win64/<modelIdentifier>.dll`) and `documentation/index.html`.
 
 use std::io::Write;
 use std::path::Path;
@@ -8,6 +9,72 @@ use zip::write::SimpleFileOptions;
 
 use crate::model_description::{MODEL_IDENTIFIER, model_description_xml};
 use crate::variables::{Causality, Kind, REAL_TYPES, VARIABLES};
+
+/// A platform of the archive's `binaries/` folder (FMI 2.0 platform names).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Platform {
+    /// `linux64`: x86-64 Linux, `<modelIdentifier>.so`.
+    Linux64,
+    /// `win64`: x86-64 Windows, `<modelIdentifier>.dll` (cross-compiled for
+    /// `x86_64-pc-windows-gnu`).
+    Win64,
+}
+
+impl Platform {
+    /// Both platforms, in archive order.
+    pub const ALL: [Platform; 2] = [Platform::Linux64, Platform::Win64];
+
+    /// The FMI 2.0 platform folder name.
+    pub fn folder(self) -> &'static str {
+        match self {
+            Platform::Linux64 => "linux64",
+            Platform::Win64 => "win64",
+        }
+    }
+
+    /// The shared library's file extension.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Platform::Linux64 => "so",
+            Platform::Win64 => "dll",
+        }
+    }
+
+    /// The Rust target triple to build for (`None`: the host, x86-64 Linux).
+    pub fn rust_target(self) -> Option<&'static str> {
+        match self {
+            Platform::Linux64 => None,
+            Platform::Win64 => Some("x86_64-pc-windows-gnu"),
+        }
+    }
+
+    /// The file name cargo gives the traction-fmu cdylib on this platform.
+    pub fn cargo_library_name(self) -> &'static str {
+        match self {
+            Platform::Linux64 => "libtraction_fmu.so",
+            Platform::Win64 => "traction_fmu.dll",
+        }
+    }
+
+    /// The path of the binary inside the archive.
+    pub fn archive_path(self) -> String {
+        format!(
+            "binaries/{}/{MODEL_IDENTIFIER}.{}",
+            self.folder(),
+            self.extension()
+        )
+    }
+}
+
+impl std::str::FromStr for Platform {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Platform::ALL
+            .into_iter()
+            .find(|p| p.folder() == s)
+            .ok_or_else(|| format!("unknown platform {s:?} (known: linux64, win64)"))
+    }
+}
 
 /// Why packaging failed.
 #[derive(Debug, thiserror::Error)]
@@ -82,15 +149,35 @@ pub fn documentation_html() -> String {
     h
 }
 
-/// Writes the `.fmu` at `out` from the compiled cdylib at `library`.
+/// Writes the `.fmu` at `out` with the linux64 binary only, from the
+/// compiled cdylib at `library`.
 ///
 /// # Errors
 /// Unreadable library, unwritable archive.
 pub fn write_fmu(library: &Path, out: &Path) -> Result<(), PackageError> {
-    let lib = std::fs::read(library).map_err(|source| PackageError::Io {
-        context: format!("reading the FMU library {}", library.display()),
-        source,
-    })?;
+    write_fmu_for(&[(Platform::Linux64, library)], out)
+}
+
+/// Writes the `.fmu` at `out` with one compiled cdylib per platform.
+///
+/// # Errors
+/// Unreadable library, unwritable archive.
+pub fn write_fmu_for(binaries: &[(Platform, &Path)], out: &Path) -> Result<(), PackageError> {
+    let libs = binaries
+        .iter()
+        .map(|&(platform, library)| {
+            std::fs::read(library)
+                .map(|bytes| (platform, bytes))
+                .map_err(|source| PackageError::Io {
+                    context: format!(
+                        "reading the {} FMU library {}",
+                        platform.folder(),
+                        library.display()
+                    ),
+                    source,
+                })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
     let xml = model_description_xml()?;
     let file = std::fs::File::create(out).map_err(|source| PackageError::Io {
         context: format!("creating {}", out.display()),
@@ -109,9 +196,11 @@ pub fn write_fmu(library: &Path, out: &Path) -> Result<(), PackageError> {
     let lib_opts = opts.unix_permissions(0o755);
     z.start_file("modelDescription.xml", opts).map_err(zerr)?;
     z.write_all(xml.as_bytes()).map_err(ioerr)?;
-    z.start_file(format!("binaries/linux64/{MODEL_IDENTIFIER}.so"), lib_opts)
-        .map_err(zerr)?;
-    z.write_all(&lib).map_err(ioerr)?;
+    for (platform, lib) in &libs {
+        z.start_file(platform.archive_path(), lib_opts)
+            .map_err(zerr)?;
+        z.write_all(lib).map_err(ioerr)?;
+    }
     z.start_file("documentation/index.html", opts)
         .map_err(zerr)?;
     z.write_all(documentation_html().as_bytes())

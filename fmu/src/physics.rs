@@ -1,7 +1,7 @@
 //! The physics seam: the one place where the FMU asks for contact forces.
 //!
-//! [`Contact::new`] and [`Contact::evaluate`] forward to `traction-contact`
-//! (issue 5), which composes traction-hertz (Hertz contact, report section
+//! [`Contact::new`] and [`Contact::evaluate`] forward to `traction-contact`,
+//! which composes traction-hertz (Hertz contact, report section
 //! 2-1), traction-fluids (the Santotrac 50 and TDF-88 correlations,
 //! Appendices II, III), traction-compliance (Kalker disc compliance, Appendix
 //! IV A, B) and traction-rheology (the Johnson & Tevaarwerk models with slip,
@@ -83,6 +83,52 @@ pub enum Rheology {
     /// Viscoelastic sinh law with the limit as a cap (parameters
     /// [`Parameters::deborah`], [`Parameters::z0`]).
     Viscoelastic,
+}
+
+/// A code that is not one of an enumeration's items (the FMU's
+/// Enumeration variables convert with `TryFrom<i32>`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("{0} is not a code of this enumeration")]
+pub struct UnknownCode(pub i32);
+
+/// Codes of the Enumeration `Fluid`: 1 Santotrac 50, 2 TDF-88, 3 user.
+impl TryFrom<i32> for Fluid {
+    type Error = UnknownCode;
+    fn try_from(code: i32) -> Result<Self, UnknownCode> {
+        match code {
+            1 => Ok(Self::Santotrac50),
+            2 => Ok(Self::Tdf88),
+            3 => Ok(Self::User),
+            _ => Err(UnknownCode(code)),
+        }
+    }
+}
+
+/// Codes of the Enumeration `EnvelopeRule`: 1 strict, 2 extrapolate, 3 clamp.
+impl TryFrom<i32> for Envelope {
+    type Error = UnknownCode;
+    fn try_from(code: i32) -> Result<Self, UnknownCode> {
+        match code {
+            1 => Ok(Self::Strict),
+            2 => Ok(Self::Extrapolate),
+            3 => Ok(Self::Clamp),
+            _ => Err(UnknownCode(code)),
+        }
+    }
+}
+
+/// Codes of the Enumeration `RheologyModel`: 1 elastic/plastic, 2
+/// rigid/plastic, 3 viscoelastic.
+impl TryFrom<i32> for Rheology {
+    type Error = UnknownCode;
+    fn try_from(code: i32) -> Result<Self, UnknownCode> {
+        match code {
+            1 => Ok(Self::ElasticPlastic),
+            2 => Ok(Self::RigidPlastic),
+            3 => Ok(Self::Viscoelastic),
+            _ => Err(UnknownCode(code)),
+        }
+    }
 }
 
 /// The regime of Appendix IV figure 14, plus an open contact.

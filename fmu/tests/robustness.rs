@@ -18,6 +18,8 @@ struct Sink {
     errors: usize,
     null_category: usize,
     last: String,
+    /// Messages of the logAll category (the call trace).
+    trace: Vec<String>,
 }
 
 /// The logger, without the variadic tail: on x86-64 and aarch64 Linux a
@@ -38,6 +40,17 @@ unsafe extern "C" fn logger_impl(
     }
     if category.is_null() {
         sink.null_category += 1;
+    }
+    // SAFETY: NUL-terminated when non-NULL.
+    let is_trace =
+        !category.is_null() && unsafe { CStr::from_ptr(category) }.to_bytes() == b"logAll";
+    if is_trace && !message.is_null() {
+        // SAFETY: NUL-terminated.
+        let m = unsafe { CStr::from_ptr(message) }
+            .to_string_lossy()
+            .into_owned();
+        sink.trace.push(m);
+        return;
     }
     if !message.is_null() {
         // SAFETY: NUL-terminated.
@@ -349,7 +362,8 @@ fn fuzz(seed: u64, n_steps: usize, map: bool) -> (usize, usize, usize, usize) {
                 if unsafe { fmi2GetRealStatus(c, FMI2_LAST_SUCCESSFUL_TIME, &mut x) } == FMI2_OK {
                     t = x;
                 }
-                let probe = fmi2DoStep(c, t, 0.0, 1);
+                // SAFETY: valid instance.
+                let probe = unsafe { fmi2DoStep(c, t, 0.0, 1) };
                 if probe == FMI2_ERROR {
                     S::Error
                 } else {
@@ -360,7 +374,8 @@ fn fuzz(seed: u64, n_steps: usize, map: bool) -> (usize, usize, usize, usize) {
         };
         if s == S::Error && rng.below(2) == 0 {
             // Recover as a master would: reset.
-            assert_eq!(fmi2Reset(c), FMI2_OK);
+            // SAFETY: valid instance.
+            assert_eq!(unsafe { fmi2Reset(c) }, FMI2_OK);
             set_map(c);
             s = S::Instantiated;
             t = 0.0;
@@ -540,4 +555,110 @@ fn instances_are_independent_across_threads() {
     let threaded = [a.join().unwrap(), b.join().unwrap()];
     assert_eq!(sequential, threaded);
     assert_ne!(sequential[0], sequential[1]);
+}
+
+fn instantiate(
+    sink: &mut Sink,
+    cb: &Fmi2CallbackFunctions,
+    name: &str,
+    logging_on: Fmi2Boolean,
+) -> Fmi2Component {
+    let name = CString::new(name).unwrap();
+    let g = CString::new(guid()).unwrap();
+    let _ = sink;
+    // SAFETY: valid strings and callbacks that outlive the instance.
+    unsafe {
+        fmi2Instantiate(
+            name.as_ptr(),
+            FMI2_COSIMULATION,
+            g.as_ptr(),
+            std::ptr::null(),
+            cb,
+            0,
+            logging_on,
+        )
+    }
+}
+
+#[test]
+fn log_all_traces_the_fmi_calls() {
+    let mut sink = Box::new(Sink::default());
+    let cb = callbacks(&mut sink);
+    let c = instantiate(&mut sink, &cb, "trace", 0);
+    assert!(!c.is_null());
+    // SAFETY: c is ours; valid pointers.
+    unsafe {
+        // Logging off: no trace.
+        assert_eq!(fmi2EnterInitializationMode(c), FMI2_OK);
+        assert!(sink.trace.is_empty(), "{:?}", sink.trace);
+        let all = CString::new("logAll").unwrap();
+        let cats = [all.as_ptr()];
+        assert_eq!(fmi2SetDebugLogging(c, 1, 1, cats.as_ptr()), FMI2_OK);
+        assert_eq!(fmi2ExitInitializationMode(c), FMI2_OK);
+        let w = 600.0;
+        assert_eq!(fmi2SetReal(c, &vr::OMEGA1, 1, &w), FMI2_OK);
+        assert_eq!(fmi2DoStep(c, 0.0, 0.001, 1), FMI2_OK);
+        let mut fx = 0.0;
+        assert_eq!(fmi2GetReal(c, &vr::FX, 1, &mut fx), FMI2_OK);
+        assert_eq!(
+            sink.trace,
+            [
+                "fmi2ExitInitializationMode()",
+                "fmi2SetReal(nvr = 1)",
+                "fmi2DoStep(currentCommunicationPoint = 0, communicationStepSize = 0.001, noSetFMUStatePriorToCurrentPoint = 1)",
+                "fmi2GetReal(nvr = 1)",
+            ]
+        );
+        // Only the warning category enabled: no trace; logging off: none.
+        let warn = CString::new("logStatusWarning").unwrap();
+        let cats = [warn.as_ptr()];
+        assert_eq!(fmi2SetDebugLogging(c, 1, 1, cats.as_ptr()), FMI2_OK);
+        let n = sink.trace.len();
+        assert_eq!(fmi2DoStep(c, 0.001, 0.001, 1), FMI2_OK);
+        assert_eq!(fmi2SetDebugLogging(c, 0, 0, std::ptr::null()), FMI2_OK);
+        assert_eq!(fmi2DoStep(c, 0.002, 0.001, 1), FMI2_OK);
+        assert_eq!(sink.trace.len(), n);
+        fmi2FreeInstance(c);
+    }
+    // loggingOn at instantiation, no categories given: everything, trace included.
+    let c = instantiate(&mut sink, &cb, "trace2", 1);
+    // SAFETY: c is ours.
+    unsafe {
+        assert_eq!(fmi2Terminate(c), FMI2_ERROR);
+        fmi2FreeInstance(c);
+    }
+    assert_eq!(
+        sink.trace.last().map(String::as_str),
+        Some("fmi2Terminate()")
+    );
+}
+
+#[test]
+fn every_refused_call_enters_the_error_state() {
+    let mut sink = Box::new(Sink::default());
+    let cb = callbacks(&mut sink);
+    // SAFETY: each c is ours; NULL arrays are what is tested.
+    unsafe {
+        // fmi2CancelStep (unsupported) refuses and enters the error state:
+        // only fmi2GetXXX, fmi2Reset and fmi2FreeInstance remain allowed.
+        let c = instantiate(&mut sink, &cb, "cancel", 0);
+        assert_eq!(fmi2CancelStep(c), FMI2_ERROR);
+        assert!(sink.last.contains("fmi2CancelStep"), "{}", sink.last);
+        assert_eq!(fmi2EnterInitializationMode(c), FMI2_ERROR);
+        assert!(sink.last.contains("Error"), "{}", sink.last);
+        assert_eq!(fmi2Reset(c), FMI2_OK);
+        assert_eq!(fmi2EnterInitializationMode(c), FMI2_OK);
+        // A NULL array refused at the boundary: the same.
+        assert_eq!(
+            fmi2GetReal(c, std::ptr::null(), 2, std::ptr::null_mut()),
+            FMI2_ERROR
+        );
+        assert_eq!(fmi2ExitInitializationMode(c), FMI2_ERROR);
+        fmi2FreeInstance(c);
+        // A blank instance name is refused with a message.
+        for name in ["", "   ", "\t \n"] {
+            assert!(instantiate(&mut sink, &cb, name, 0).is_null(), "{name:?}");
+            assert!(sink.last.contains("instanceName"), "{}", sink.last);
+        }
+    }
 }

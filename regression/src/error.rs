@@ -88,6 +88,14 @@ pub enum RegressionError {
     /// The singular value decomposition did not converge.
     #[error("singular value decomposition of the design matrix did not converge")]
     Svd,
+    /// The residual function of a nonlinear least-squares fit failed where it
+    /// must succeed (the initial point, or both sides of a finite-difference
+    /// step).
+    #[error("residual function failed {message}")]
+    Residual {
+        /// Where, and the function's own message.
+        message: String,
+    },
     /// A fitted estimate is not positive, so the report's percent error
     /// 50·(a/e − e/a) is undefined for it.
     #[error("estimate {estimate} at data point {index} is not positive; percent error undefined")]

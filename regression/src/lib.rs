@@ -28,6 +28,10 @@
 //! ([`percent_error`]: 50·(a/e − e/a)) and its mean and sample standard
 //! deviation ([`ErrorStats`]).
 //!
+//! Nonlinear least squares (Levenberg–Marquardt on faer, finite-difference
+//! Jacobians, standard errors and correlations of the parameters) is in
+//! [`nls`]; the `traction identify` command calibrates the contact model with it.
+//!
 //! ## Assumptions and units
 //! Variables are the report's: U in m/s, P0 in **GPa** (the report defines the
 //! correlations with P0 in GPa), θ in **°C** (θ' depends on the Celsius zero),
@@ -72,6 +76,7 @@
 mod design;
 mod error;
 mod fit;
+pub mod nls;
 
 pub use design::{
     Model, Normalised, P0_GPA_RANGE, SPEED_RANGE, TEMPERATURE_RANGE, TemperatureForm, TermSet,

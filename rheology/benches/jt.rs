@@ -51,23 +51,22 @@ fn benches(c: &mut Criterion) {
         for tol in [1e-3, 1e-4] {
             let a = Accuracy::new(tol).unwrap();
             let mut map = Map::new(inp.k, 0.0, 1.0, a).unwrap();
-            let pts: Vec<[f64; 3]> = (0..64)
+            let pts: Vec<Inputs> = (0..64)
                 .map(|i| {
                     let f = 1.0 + 0.02 * ((i as f64 * 0.37).sin());
                     let g = 1.0 + 0.02 * ((i as f64 * 0.73).cos());
-                    [inp.j1 * f + 0.01 * g, inp.j2 * g, inp.j3 * f]
+                    Inputs::new(inp.k, inp.j1 * f + 0.01 * g, inp.j2 * g, inp.j3 * f).unwrap()
                 })
                 .collect();
             for p in &pts {
-                map.evaluate(p[0], p[1], p[2]).unwrap();
+                map.evaluate(p).unwrap();
             }
             let s0 = map.stats();
             let mut n = 0usize;
             g.bench_function(format!("warm {name} tol={tol:.0e}"), |b| {
                 b.iter(|| {
                     n = (n + 1) & 63;
-                    let p = black_box(pts[n]);
-                    map.evaluate(p[0], p[1], p[2]).unwrap()
+                    map.evaluate(black_box(&pts[n])).unwrap()
                 })
             });
             let s1 = map.stats();
@@ -79,20 +78,21 @@ fn benches(c: &mut Criterion) {
         }
     }
     let a = Accuracy::new(1e-3).unwrap();
-    let curve: Vec<[f64; 3]> = (0..100).map(|i| [0.08 * i as f64, 0.3, 4.0]).collect();
+    let curve: Vec<Inputs> = (0..100)
+        .map(|i| Inputs::new(5.0, 0.08 * i as f64, 0.3, 4.0).unwrap())
+        .collect();
     g.bench_function("cold curve k=5 100 points tol=1e-3", |b| {
         b.iter(|| {
             let mut map = Map::new(5.0, 0.0, 1.0, a).unwrap();
             for p in &curve {
-                black_box(map.evaluate(p[0], p[1], p[2]).unwrap());
+                black_box(map.evaluate(p).unwrap());
             }
         })
     });
     g.bench_function("direct curve k=5 100 points tol=1e-3", |b| {
         b.iter(|| {
             for p in &curve {
-                let inp = Inputs::new(5.0, p[0], p[1], p[2]).unwrap();
-                black_box(evaluate(&inp, Model::ElasticPlastic, a).unwrap());
+                black_box(evaluate(p, Model::ElasticPlastic, a).unwrap());
             }
         })
     });

@@ -62,11 +62,23 @@ pub fn rigid_plastic_slip_traction(j1: f64, j2: f64) -> (f64, f64) {
     (a / h, b / h)
 }
 
-/// Spin torque J6 of the slip-only elastic/plastic solution about the
-/// contact centre (zero spin, any ΔX): the stress field is even in Y and
-/// Zy = 0, so J6 = 0 exactly.
-pub fn slip_torque() -> f64 {
-    0.0
+/// Spin torque J6 about the contact centre for combined slip and side slip,
+/// zero spin (elastic/plastic model, the aligning moment of the side force):
+/// J6 = J2/(4k·(1+S²)²) with S = (2/3)·√(J1²+J2²)/√k.
+///
+/// Derivation: every strip (half-width c) sees the constant elastic rate
+/// v = (J1, J2)/√k; Zy = vy·(X + c) up to the yield point X* = c·ξ*,
+/// ξ* = (1−S²)/(1+S²), and Zy = L·vy/|v| beyond it. With X = c·ξ,
+/// ∫Zy·X dX = c³·vy·[(ξ*+1)²(2ξ*−1)/6 + (1−ξ*²)^{3/2}/(2|v|)]
+/// = c³·vy·(2/3)/(1+S²)², and ∫(1−Y²)^{3/2} dY = 3π/8; the Zx·Y part is odd
+/// in Y. The elastic limit (S → 0) is (1/4)J2/k, the rigid/plastic limit 0
+/// (the lateral traction is then symmetric about X = 0). With a spin-pole
+/// offset the torque about the pole adds ΔX·J5/√k (see the crate docs).
+pub fn combined_slip_torque(k: f64, j1: f64, j2: f64) -> f64 {
+    let s = (2.0 / 3.0) * j1.hypot(j2) / k.sqrt();
+    let d = 1.0 + s * s;
+    // d = inf for huge slips: the torque is 0 (rigid/plastic limit).
+    j2 / (4.0 * k * d * d)
 }
 
 #[cfg(test)]
@@ -96,6 +108,17 @@ mod tests {
         assert!((slip_traction(k, j1) / exact - 1.0).abs() < 1e-6);
         let (j4, j5) = combined_slip_traction(k, j1, 0.0);
         assert!((j4 / exact - 1.0).abs() < 1e-6 && j5 == 0.0);
+    }
+
+    #[test]
+    fn small_side_slip_torque_is_the_elastic_integral() {
+        // Elastic limit: Zy = (J2/√k)(X + c), ∫∫Zy·X = (J2/√k)·(2/3)·(3π/8),
+        // so J6 = J2/(4k); relative agreement 1e-7 at S ≈ 1e-4 (next term
+        // −2S², 2e-8).
+        let (k, j2) = (2.0_f64, 2e-4_f64);
+        let j6 = combined_slip_torque(k, 0.0, j2);
+        assert!((j6 / (j2 / (4.0 * k)) - 1.0).abs() < 1e-7, "{j6}");
+        assert_eq!(combined_slip_torque(1.0, 1e300, 1e300), 0.0);
     }
 
     #[test]

@@ -60,9 +60,9 @@
 //! * [`Model::Viscoelastic`]: the sinh law (App. V eqs. 3–6) with Deborah
 //!   number D = ηU/(Ḡa) and reference stress Z0 = τ0/τ̄, with the limit L kept
 //!   as a cap; D → ∞ gives the elastic/plastic model exactly (the viscous
-//!   term vanishes), Z0 → ∞ the linear Maxwell fluid. See [`viscoelastic`].
+//!   term vanishes), Z0 → ∞ the linear Maxwell fluid (`visco.rs`).
 //! * Other property variations (App. IV eq. 8: G pressure-proportional,
-//!   limit constant): [`elastic_plastic_with`] and [`Properties`], solved by a
+//!   limit constant): [`Model::PropertyVariation`] with [`Properties`], solved by a
 //!   Richardson-extrapolated grid scheme ([`props`], ≈ 1e-4, milliseconds).
 //! * The stress field Z(X, Y) on a grid (plots, flow pattern):
 //!   [`stress_field`].
@@ -72,7 +72,8 @@
 //!   evaluation before use and refined where the model is not smooth
 //!   (≈ 0.2 µs per evaluation once built, results within tol).
 //! * Closed forms for zero spin: [`closed::slip_traction`] (eq. 22),
-//!   [`closed::combined_slip_traction`] (eq. 23),
+//!   [`closed::combined_slip_traction`] (eq. 23) and its aligning moment
+//!   [`closed::combined_slip_torque`],
 //!   [`closed::rigid_plastic_slip_traction`] (eq. 24).
 //!
 //! ## Anisotropic stiffness (gy = Ḡy/Ḡx)
@@ -122,7 +123,9 @@
 //!
 //! ## Accuracy
 //! [`Accuracy`] sets the target absolute error of J4, J5, J6; tests check it
-//! against converged solutions and a second, independent grid method.
+//! against converged solutions and a second, independent grid method
+//! ([`reference`]: the strip integrator at a fixed resolution, the grid
+//! scheme).
 //!
 //! ## Example
 //! ```
@@ -146,6 +149,7 @@ pub mod field;
 pub mod map;
 pub mod props;
 mod quad;
+pub mod reference;
 mod rigid;
 mod visco;
 
@@ -195,6 +199,16 @@ pub enum RheologyError {
     /// The accuracy of a [`map::Map`] is outside [1e-4, 1e-2].
     #[error("map accuracy tol = {0} is outside the supported range [1e-4, 1e-2]")]
     MapTolerance(f64),
+    /// Inputs given to a [`map::Map`] built for another k, ΔX or gy.
+    #[error("{name} = {value} differs from the map's {name} = {map}")]
+    MapKey {
+        /// Which quantity (k, dX, gy).
+        name: &'static str,
+        /// The input's value.
+        value: f64,
+        /// The map's value.
+        map: f64,
+    },
     /// A stress-field grid size is outside 1..=4000.
     #[error("grid size {0} is outside the supported range 1..=4000")]
     Grid(usize),
@@ -299,6 +313,12 @@ pub enum Model {
     ElasticPlastic,
     /// Rigid/plastic (Ḡ → ∞): Z = L·v/|v|.
     RigidPlastic,
+    /// Elastic/perfectly plastic with any of App. IV's property variations
+    /// ([`Properties`]): the default combination is [`Model::ElasticPlastic`];
+    /// the others use a Richardson-extrapolated grid scheme whose error is
+    /// ≈ 1e-4 (cells per strip 400/800 for tol ≥ 1e-4, 1600/3200 below; see
+    /// [`props`]) and cost milliseconds per evaluation.
+    PropertyVariation(Properties),
     /// Viscoelastic sinh law with the limit as a cap.
     Viscoelastic {
         /// Deborah number D = ηU/(Ḡa) (> 0, `inf` allowed).
@@ -351,10 +371,10 @@ impl Accuracy {
     }
 
     /// A fixed (non-adaptive) discretisation for this target, for
-    /// [`elastic_plastic`]: panels ⌈10·√(1e-3/tol)⌉ of 8 Gauss points and
-    /// [`Accuracy::s_step`]. [`evaluate`] uses the adaptive Y quadrature
-    /// ([`elastic_plastic_adaptive`] with 4 points per panel) instead, which is
-    /// 3–8× cheaper for moderate spin at the same verified accuracy.
+    /// [`reference::elastic_plastic`]: panels ⌈10·√(1e-3/tol)⌉ of 8 Gauss
+    /// points and [`Accuracy::s_step`]. [`evaluate`] uses an adaptive Y
+    /// quadrature (4 points per panel) instead, which is 3–8× cheaper for
+    /// moderate spin at the same verified accuracy.
     pub fn resolution(&self) -> Resolution {
         // Calibrated by the convergence study (rheology/tests/convergence.rs):
         // the error is dominated by the Y quadrature across strips where the
@@ -373,25 +393,32 @@ impl Accuracy {
 /// Evaluate a model at the given accuracy.
 ///
 /// Every output is finite for finite inputs. The elastic/plastic model uses
-/// the closed form of App. V eq. 23 when J3 = 0 (exact; ΔX has no effect
-/// then), and the rigid/plastic solution when max|J| > [`J_RIGID`].
-/// Otherwise it integrates strips with adaptive panels in Y (4 Gauss points
-/// each) and the s-step [`Accuracy::s_step`], doubled on plastic segments
-/// that stay non-stiff (κ·h below the RK4 stability margin) at the doubled
-/// step.
+/// the closed forms of App. V eq. 23 and [`closed::combined_slip_torque`]
+/// when J3 = 0 and gy = 1 (exact; ΔX only moves the torque's reference
+/// point, adding ΔX·J5/√k), and the rigid/plastic solution when
+/// max|J| > [`J_RIGID`]. Otherwise it integrates strips with adaptive panels
+/// in Y (4 Gauss points each, refinement blended so that the outputs are
+/// continuous in the inputs) and the s-step [`Accuracy::s_step`], doubled on
+/// plastic segments that stay non-stiff (κ·h below the RK4 stability
+/// margin) at the doubled step.
 pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, RheologyError> {
     inp.validate()?;
     let (j4, j5, j6) = match model {
         Model::ElasticPlastic => {
             if inp.j3 == 0.0 && inp.gy == 1.0 {
                 let (j4, j5) = closed::combined_slip_traction(inp.k, inp.j1, inp.j2);
-                (j4, j5, 0.0)
+                // Torque about the spin pole (crate docs): the centre's
+                // aligning moment plus ΔX·J5/√k.
+                let j6 = closed::combined_slip_torque(inp.k, inp.j1, inp.j2)
+                    + inp.dx * j5 / inp.k.sqrt();
+                (j4, j5, j6)
             } else {
                 let h = acc.s_step();
                 return adaptive(inp, 4, acc.tol, h, SMOOTH_STEP_FACTOR * h);
             }
         }
         Model::RigidPlastic => return rigid_plastic(inp, acc),
+        Model::PropertyVariation(props) => return elastic_plastic_with(inp, props, acc),
         Model::Viscoelastic { deborah, z0 } => return viscoelastic(inp, deborah, z0, acc),
     };
     Ok(finish(inp, j4, j5, j6))
@@ -410,31 +437,6 @@ fn rigid_scaled(inp: &Inputs) -> ep::Scaled {
     let m = inp.j1.abs().max(inp.j2.abs()).max(inp.j3.abs());
     let f = if m > 1.0 { 1.0 / m } else { 1.0 };
     ep::Scaled::new(inp.k, inp.j1 * f, inp.j2 * f, inp.j3 * f, inp.dx).with_gy(inp.gy)
-}
-
-/// Elastic/plastic strip integration at an explicit resolution (no closed-form
-/// fast path; used by the convergence study and benches).
-pub fn elastic_plastic(inp: &Inputs, res: &Resolution) -> Result<Outputs, RheologyError> {
-    inp.validate()?;
-    let m = inp.j1.abs().max(inp.j2.abs()).max(inp.j3.abs());
-    if m > J_RIGID {
-        return rigid_plastic(inp, Accuracy { tol: 1e-6 });
-    }
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
-    let (j4, j5, j6) = ep::solve(&sc, res);
-    Ok(finish(inp, j4, j5, j6))
-}
-
-/// Elastic/plastic strip integration with adaptive panels in Y (experimental
-/// fast path): `n` Gauss points per panel, panels halved until the panel
-/// estimate changes by less than `tol`·width/π, fixed `s_step`.
-pub fn elastic_plastic_adaptive(
-    inp: &Inputs,
-    n: usize,
-    tol: f64,
-    s_step: f64,
-) -> Result<Outputs, RheologyError> {
-    adaptive(inp, n, tol, s_step, s_step)
 }
 
 /// Longer s-step factor of [`evaluate`] on non-stiff plastic segments (κ·h
@@ -469,7 +471,7 @@ fn adaptive(
 /// split at the pole strip and where vy = 0 leaves the ellipse (see
 /// `rigid.rs`): within `tol` of the converged solution; a test checks
 /// 1e-6 against an independent nested adaptive Simpson reference.
-pub fn rigid_plastic(inp: &Inputs, acc: Accuracy) -> Result<Outputs, RheologyError> {
+pub(crate) fn rigid_plastic(inp: &Inputs, acc: Accuracy) -> Result<Outputs, RheologyError> {
     inp.validate()?;
     let sc = rigid_scaled(inp);
     let (j4, j5, j6) = rigid::solve(&sc, acc.tol);
@@ -482,7 +484,7 @@ pub fn rigid_plastic(inp: &Inputs, acc: Accuracy) -> Result<Outputs, RheologyErr
 /// `z0` = τ0/τ̄ > 0 (`inf` = linear Maxwell fluid). The step count follows
 /// from the accuracy (the scheme is second order without the cap, first order
 /// where the cap is active).
-pub fn viscoelastic(
+pub(crate) fn viscoelastic(
     inp: &Inputs,
     deborah: f64,
     z0: f64,
@@ -510,35 +512,15 @@ pub fn viscoelastic(
     Ok(finish(inp, j4, j5, j6))
 }
 
-/// Elastic/plastic model with any of App. IV's property variations
-/// ([`Properties`]). The default combination uses the strip integrator
-/// ([`evaluate`]); the others a Richardson-extrapolated grid scheme whose
-/// error is ≈ 1e-4 (cells per strip 400/800 for tol ≥ 1e-4, 1600/3200
-/// below; see [`props`]). Costs milliseconds per evaluation.
-pub fn elastic_plastic_with(
+/// Elastic/plastic model with a property variation ([`Model::PropertyVariation`]).
+fn elastic_plastic_with(
     inp: &Inputs,
     props: Properties,
     acc: Accuracy,
 ) -> Result<Outputs, RheologyError> {
-    inp.validate()?;
     if props == Properties::default() {
         return evaluate(inp, Model::ElasticPlastic, acc);
     }
     let n = if acc.tol >= 1e-4 { 400 } else { 1600 };
-    grid_reference(inp, props, n)
-}
-
-/// The grid scheme of [`props`] for any property combination, with `cells`
-/// and 2·`cells` cells per strip (and as many strips), Richardson-extrapolated
-/// (clamped to 10..=20000). Independent of the strip integrator; used to
-/// cross-check it.
-pub fn grid_reference(
-    inp: &Inputs,
-    props: Properties,
-    cells: usize,
-) -> Result<Outputs, RheologyError> {
-    inp.validate()?;
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
-    let (j4, j5, j6) = props::solve(&sc, props, cells.clamp(10, 20000));
-    Ok(finish(inp, j4, j5, j6))
+    reference::grid(inp, props, n)
 }

@@ -149,8 +149,8 @@ type Stencil2 = Box<[[f64; 3]; 16]>;
 /// use traction_rheology::{Accuracy, Inputs, Model, evaluate, map::Map};
 ///
 /// let mut map = Map::new(5.0, 0.0, 1.0, Accuracy::new(1e-3).unwrap()).unwrap();
-/// let m = map.evaluate(1.2, 0.4, 6.0).unwrap();
 /// let inp = Inputs::new(5.0, 1.2, 0.4, 6.0).unwrap();
+/// let m = map.evaluate(&inp).unwrap();
 /// let d = evaluate(&inp, Model::ElasticPlastic, Accuracy::new(1e-6).unwrap()).unwrap();
 /// assert!((m.j4 - d.j4).abs() < 1e-3 && (m.j6 - d.j6).abs() < 1e-3);
 /// ```
@@ -236,11 +236,27 @@ impl Map {
         }
     }
 
-    /// Evaluate J4..J7 at (J1, J2, J3): interpolated in an accepted cell,
-    /// directly otherwise. Errors: a non-finite J (named).
-    pub fn evaluate(&mut self, j1: f64, j2: f64, j3: f64) -> Result<Outputs, RheologyError> {
-        let inp = self.inputs(j1, j2, j3);
+    /// Check that `inp` belongs to this map (same k, ΔX and gy) and is valid.
+    fn accept(&self, inp: &Inputs) -> Result<(f64, f64, f64), RheologyError> {
         inp.validate()?;
+        for (name, value, map) in [
+            ("k", inp.k, self.k),
+            ("dX", inp.dx, self.dx),
+            ("gy", inp.gy, self.gy),
+        ] {
+            if value != map {
+                return Err(RheologyError::MapKey { name, value, map });
+            }
+        }
+        Ok((inp.j1, inp.j2, inp.j3))
+    }
+
+    /// Evaluate J4..J7 at `inp` (whose k, ΔX and gy must be this map's,
+    /// else [`RheologyError::MapKey`]): interpolated in an accepted cell,
+    /// directly otherwise. Errors: a non-finite J (named).
+    pub fn evaluate(&mut self, inp: &Inputs) -> Result<Outputs, RheologyError> {
+        let (j1, j2, j3) = self.accept(inp)?;
+        let inp = *inp;
         if (j3 == 0.0 && self.gy == 1.0) || (j1 == 0.0 && j2 == 0.0 && j3 == 0.0) {
             self.stats.closed_form += 1;
             return evaluate(&inp, Model::ElasticPlastic, Accuracy { tol: self.tol });
@@ -386,9 +402,9 @@ impl Map {
     /// with the same cell check and refinement. J3 = 0 and J = 0 are
     /// evaluated directly. Used for the regime classification of
     /// traction-contact.
-    pub fn rigid_plastic(&mut self, j1: f64, j2: f64, j3: f64) -> Result<Outputs, RheologyError> {
-        let inp = self.inputs(j1, j2, j3);
-        inp.validate()?;
+    pub fn rigid_plastic(&mut self, inp: &Inputs) -> Result<Outputs, RheologyError> {
+        let (j1, j2, j3) = self.accept(inp)?;
+        let inp = *inp;
         if j3 == 0.0 {
             self.stats.rigid_direct += 1;
             return crate::rigid_plastic(&inp, Accuracy { tol: self.tol });

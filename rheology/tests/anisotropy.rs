@@ -4,9 +4,15 @@
 //! mapping, the rigid/plastic and viscoelastic limits, and dissipation.
 #![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
 
+use traction_rheology::reference::grid as grid_reference;
 use traction_rheology::{
-    Accuracy, Inputs, Model, Properties, closed, evaluate, grid_reference, rigid_plastic,
+    Accuracy, Inputs, Model, Outputs, Properties, RheologyError, closed, evaluate,
 };
+
+/// The rigid/plastic model through [`evaluate`].
+fn rigid_plastic(i: &Inputs, a: Accuracy) -> Result<Outputs, RheologyError> {
+    evaluate(i, Model::RigidPlastic, a)
+}
 
 fn inp(k: f64, j1: f64, j2: f64, j3: f64, gy: f64) -> Inputs {
     Inputs::new(k, j1, j2, j3)
@@ -140,9 +146,8 @@ fn limits_and_dissipation() {
 fn large_j_with_anisotropy_meets_the_accuracy() {
     // |J| in the hundreds with gy ≠ 1 (and ΔX ≠ 0): the stiff segments use
     // the quasi-steady direction, which for gy ≠ 1 must solve dθ/ds = α'
-    // of the anisotropic law (session 3: the isotropic lag formula was used,
-    // off by 9e-4 in J5 at tol = 1e-4 for the first case, found by the map's
-    // random check). Against the same integrator at 1e-7 (the independent
+    // of the anisotropic law (the isotropic lag formula is off by 9e-4 in J5
+    // at tol = 1e-4 for the first case). Against the same integrator at 1e-7 (the independent
     // grid scheme at 200/400/800 cells, extrapolated, agrees to ≈ 1e-5 on
     // the first and fifth case): ≤ tol at 1e-3 and 1e-4.
     // Also two cases where the RK4 sub-steps ended too early for gy ≠ 1 (the

@@ -3,7 +3,8 @@
 //! accuracy parameter's promise (error ≤ tol against a converged solution).
 #![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
 
-use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, elastic_plastic, evaluate};
+use traction_rheology::reference::elastic_plastic;
+use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, evaluate};
 
 fn err(a: &Outputs, b: &Outputs) -> f64 {
     (a.j4 - b.j4)

@@ -4,6 +4,20 @@
 use traction_rheology::map::Map;
 use traction_rheology::{Accuracy, Inputs, Model, RheologyError, evaluate};
 
+/// The inputs at (J1, J2, J3) with the map's k, ΔX and gy (unvalidated:
+/// the map validates).
+fn at(map: &Map, j1: f64, j2: f64, j3: f64) -> Inputs {
+    let (k, dx, gy) = map.key();
+    Inputs {
+        k,
+        j1,
+        j2,
+        j3,
+        dx,
+        gy,
+    }
+}
+
 /// xorshift64: deterministic pseudo-random numbers in [0, 1).
 struct Rng(u64);
 impl Rng {
@@ -46,7 +60,7 @@ fn map_meets_its_accuracy_on_random_points() {
         let mut map = Map::new(k, 0.0, 1.0, Accuracy::new(tol).unwrap()).unwrap();
         for _ in 0..150 {
             let j = random_j(&mut rng, k, 5.0);
-            let m = map.evaluate(j.0, j.1, j.2).unwrap();
+            let m = map.evaluate(&at(&map, j.0, j.1, j.2)).unwrap();
             let r = reference(k, j, 1e-5);
             let err = (m.j4 - r[0])
                 .abs()
@@ -78,7 +92,7 @@ fn map_with_offset_and_anisotropy_meets_its_accuracy() {
     let mut rng = Rng(0x0ff5_e7a1_5070_0002);
     for _ in 0..80 {
         let j = random_j(&mut rng, k, 4.0);
-        let m = map.evaluate(j.0, j.1, j.2).unwrap();
+        let m = map.evaluate(&at(&map, j.0, j.1, j.2)).unwrap();
         let inp = Inputs::with_offset(k, j.0, j.1, j.2, dx)
             .unwrap()
             .with_stiffness_ratio(gy)
@@ -102,15 +116,15 @@ fn results_do_not_depend_on_the_cache() {
     let mut a = Map::new(3.0, 0.0, 1.0, acc).unwrap();
     let ra: Vec<_> = pts
         .iter()
-        .map(|j| a.evaluate(j.0, j.1, j.2).unwrap())
+        .map(|j| a.evaluate(&at(&a, j.0, j.1, j.2)).unwrap())
         .collect();
     let mut b = Map::new(3.0, 0.0, 1.0, acc).unwrap();
     for (j, expect) in pts.iter().zip(&ra).rev() {
-        assert_eq!(b.evaluate(j.0, j.1, j.2).unwrap(), *expect);
+        assert_eq!(b.evaluate(&at(&b, j.0, j.1, j.2)).unwrap(), *expect);
     }
     a.clear();
     for (j, expect) in pts.iter().zip(&ra) {
-        assert_eq!(a.evaluate(j.0, j.1, j.2).unwrap(), *expect);
+        assert_eq!(a.evaluate(&at(&a, j.0, j.1, j.2)).unwrap(), *expect);
     }
 }
 
@@ -120,9 +134,9 @@ fn map_keeps_the_model_symmetries() {
     // The fold makes both exact (bit-identical up to the sign).
     let mut map = Map::new(1.5, 0.0, 1.0, Accuracy::new(1e-3).unwrap()).unwrap();
     for &(j1, j2, j3) in &[(1.0, 0.5, 3.0), (0.3, -2.0, 8.0), (-4.0, 1.0, -20.0)] {
-        let o = map.evaluate(j1, j2, j3).unwrap();
-        let n = map.evaluate(-j1, -j2, -j3).unwrap();
-        let m = map.evaluate(j1, -j2, -j3).unwrap();
+        let o = map.evaluate(&at(&map, j1, j2, j3)).unwrap();
+        let n = map.evaluate(&at(&map, -j1, -j2, -j3)).unwrap();
+        let m = map.evaluate(&at(&map, j1, -j2, -j3)).unwrap();
         assert_eq!((n.j4, n.j5, n.j6), (-o.j4, -o.j5, -o.j6));
         assert_eq!((m.j4, m.j5, m.j6), (o.j4, -o.j5, -o.j6));
         assert!(o.j7 >= 0.0 && n.j7 >= 0.0 && m.j7 >= 0.0);
@@ -134,18 +148,24 @@ fn zero_spin_and_extreme_inputs() {
     // J3 = 0: the exact closed form (App. V eq. 23); J = 0: zero; huge J's:
     // the rigid/plastic limit, finite; bad input: errors naming the value.
     let mut map = Map::new(2.0, 0.0, 1.0, Accuracy::new(1e-3).unwrap()).unwrap();
-    let o = map.evaluate(1.5, 0.5, 0.0).unwrap();
+    let o = map.evaluate(&at(&map, 1.5, 0.5, 0.0)).unwrap();
     let (j4, j5) = traction_rheology::closed::combined_slip_traction(2.0, 1.5, 0.5);
-    assert_eq!((o.j4, o.j5, o.j6), (j4, j5, 0.0));
-    assert_eq!(map.evaluate(0.0, 0.0, 0.0).unwrap().j4, 0.0);
+    let j6 = traction_rheology::closed::combined_slip_torque(2.0, 1.5, 0.5);
+    assert_eq!((o.j4, o.j5, o.j6), (j4, j5, j6));
+    assert_eq!(map.evaluate(&at(&map, 0.0, 0.0, 0.0)).unwrap().j4, 0.0);
     for &s in &[1e6, 1e11, 1e300] {
-        let o = map.evaluate(0.3 * s, 0.1 * s, s).unwrap();
+        let o = map.evaluate(&at(&map, 0.3 * s, 0.1 * s, s)).unwrap();
         assert!(o.j4.is_finite() && o.j5.is_finite() && o.j6.is_finite() && o.j7 >= 0.0);
         assert!(o.j4.hypot(o.j5) <= 1.0 + 1e-3);
     }
     assert!(matches!(
-        map.evaluate(f64::NAN, 0.0, 1.0),
+        map.evaluate(&at(&map, f64::NAN, 0.0, 1.0)),
         Err(RheologyError::NotFinite { name: "J1", .. })
+    ));
+    // Inputs of another geometry are refused by name.
+    assert!(matches!(
+        map.evaluate(&Inputs::new(3.0, 1.0, 0.0, 1.0).unwrap()),
+        Err(RheologyError::MapKey { name: "k", .. })
     ));
     assert_eq!(
         Map::new(2.0, 0.0, 1.0, Accuracy::new(1e-6).unwrap()).unwrap_err(),
@@ -167,7 +187,7 @@ fn a_traction_curve_reuses_cells() {
     let mut map = Map::new(k, 0.0, 1.0, Accuracy::new(tol).unwrap()).unwrap();
     for n in 0..400 {
         let j1 = 0.02 * n as f64;
-        let o = map.evaluate(j1, 0.3, 4.0).unwrap();
+        let o = map.evaluate(&at(&map, j1, 0.3, 4.0)).unwrap();
         if n % 20 == 0 {
             let r = reference(k, (j1, 0.3, 4.0), 1e-5);
             assert!((o.j4 - r[0]).abs() <= tol && (o.j6 - r[2]).abs() <= tol);
@@ -193,9 +213,11 @@ fn rigid_plastic_map_meets_its_accuracy() {
         for n in 0..150 {
             let j = random_j(&mut rng, k, 1.0);
             let s = if n % 10 == 0 { 1e300 } else { 1.0 };
-            let m = map.rigid_plastic(s * j.0, s * j.1, s * j.2).unwrap();
+            let m = map
+                .rigid_plastic(&at(&map, s * j.0, s * j.1, s * j.2))
+                .unwrap();
             let inp = Inputs::new(k, j.0, j.1, j.2).unwrap();
-            let r = traction_rheology::rigid_plastic(&inp, Accuracy::new(1e-5).unwrap()).unwrap();
+            let r = evaluate(&inp, Model::RigidPlastic, Accuracy::new(1e-5).unwrap()).unwrap();
             let err = (m.j4 - r.j4)
                 .abs()
                 .max((m.j5 - r.j5).abs())

@@ -4,11 +4,26 @@
 use std::f64::consts::PI;
 
 use proptest::prelude::*;
+use traction_rheology::reference::{elastic_plastic, grid as grid_reference};
 use traction_rheology::{
     Accuracy, Inputs, Limit, Model, Modulus, Outputs, Properties, Resolution, RheologyError,
-    closed, elastic_plastic, elastic_plastic_with, evaluate, grid_reference, rigid_plastic,
-    viscoelastic,
+    closed, evaluate,
 };
+
+/// The rigid/plastic model through [`evaluate`].
+fn rigid_plastic(i: &Inputs, a: Accuracy) -> Result<Outputs, RheologyError> {
+    evaluate(i, Model::RigidPlastic, a)
+}
+
+/// The viscoelastic model through [`evaluate`].
+fn viscoelastic(i: &Inputs, deborah: f64, z0: f64, a: Accuracy) -> Result<Outputs, RheologyError> {
+    evaluate(i, Model::Viscoelastic { deborah, z0 }, a)
+}
+
+/// A property variation through [`evaluate`].
+fn elastic_plastic_with(i: &Inputs, p: Properties, a: Accuracy) -> Result<Outputs, RheologyError> {
+    evaluate(i, Model::PropertyVariation(p), a)
+}
 
 fn inp(k: f64, j1: f64, j2: f64, j3: f64) -> Inputs {
     Inputs::new(k, j1, j2, j3).unwrap()
@@ -440,8 +455,8 @@ fn rigid_plastic_matches_a_brute_force_reference() {
     // J4..J6 of Z = L·v/|v| by nested adaptive Simpson in (φ, s) (Y = sin φ,
     // X = c·sin s) to 1e-10 / 1e-12, against rigid_plastic at tol = 1e-6:
     // agreement 1e-6. Cases: moderate spin, the spin pole just inside the
-    // contact near the axis (k = 0.2 — here the solver of sessions 1–2, with
-    // uniform panels, was off by 1.6e-3 at tol = 1e-4 and 2e-4 at 1e-8),
+    // contact near the axis (k = 0.2 — here uniform panels are off by 1.6e-3
+    // at tol = 1e-4 and 2e-4 at 1e-8),
     // pole outside, side slip with the line vy = 0 leaving the ellipse, ΔX.
     use std::f64::consts::{FRAC_PI_2, PI};
     let cases: [(f64, f64, f64, f64, f64); 5] = [

@@ -9,7 +9,7 @@
 
 use std::f64::consts::PI;
 
-use traction_rheology::{Inputs, Resolution, elastic_plastic};
+use traction_rheology::{Inputs, Resolution, reference::elastic_plastic};
 
 /// Dimensional contact: semi-axes a, b (m), film h (m), modulus G (Pa), mean
 /// limit τ̄ (Pa), speed U and rates ΔU, ΔV (m/s), spin ω (rad/s).

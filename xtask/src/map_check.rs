@@ -35,10 +35,10 @@ pub fn run(a: &[String]) -> Result<(), String> {
         let p = 2.0 * PI * rnd();
         let q = (1.0 - z * z).sqrt();
         let (j1, j2, j3) = (r * q * p.cos() / s12, r * q * p.sin() / s12, r * z / s3);
-        let m = map.evaluate(j1, j2, j3).unwrap();
         let inp = Inputs::with_offset(k, j1, j2, j3, dx)
             .and_then(|i| i.with_stiffness_ratio(gy))
             .unwrap();
+        let m = map.evaluate(&inp).unwrap();
         let o = evaluate(&inp, Model::ElasticPlastic, acc).unwrap();
         let err = (m.j4 - o.j4)
             .abs()

@@ -1,0 +1,445 @@
+//! Plastic segments of a strip: the stress on the limit, |Z| = L, with its
+//! direction n turning at dθ/ds = (2/3)(v·t) (isotropic), integrated by RK4
+//! with stiffness and turn control, the quasi-steady limit for large κ, and
+//! the location of elastic unloading.
+
+use std::f64::consts::FRAC_PI_2;
+
+use super::{CS_MIN, Event, PState, PlasticEnd, Strip, StripSums};
+
+/// Largest number of RK4 sub-steps per step before the quasi-steady branch.
+const MAX_SUB: usize = 16;
+/// Largest turn of the slip direction α per step, as a multiple of the
+/// s-step: steps (and sub-steps) are shortened to |α'|·h ≤ 3·s_step near a
+/// strip's crossing of the line vy = 0, where α turns by up to π within
+/// ΔX ≈ |a/q2| (high spin). Without it, strips crossing close to the pole
+/// were wrong by up to 0.2 at tol = 1e-2 (k = 0.151, J = (0.358, 0.648,
+/// −43.2)); 3 keeps the worst error/tol over 164 cases ≤ 0.7 (1, 2 and 5
+/// were checked: no systematic gain below 3, ≤ 0.7 at all of them).
+const TURN_PER_STEP: f64 = 3.0;
+/// Largest number of sub-steps per step for the turn of the slip direction.
+const MAX_SUB_TURN: f64 = 256.0;
+/// Largest number of steps of a plastic segment (a guard: the turn limit
+/// needs at most span/s_step·(1 + π/(3·s_step)) steps).
+const MAX_STEPS: usize = 1 << 16;
+/// RK4 stability margin on κ·h (the real stability limit is 2.78; at 2 the
+/// RK4 amplification of the linearised relaxation is 1/3, positive, so the
+/// transient still decays monotonically). Raised from 1.2: the verified
+/// error/tol of `evaluate` stays ≤ 0.32 (rheology/tests/convergence.rs).
+const KAPPA_H: f64 = 2.0;
+
+/// Relative slack of the κ·h test of a whole segment (round-off of the bound).
+const KAPPA_H_SLACK: f64 = 1e-12;
+/// κ·h of the first step after yield on stiff segments (doubled per step).
+const GRADED_KAPPA_H: f64 = 0.5;
+/// Steps after yield over which the graded start applies (the cap has
+/// long exceeded the regular step by then).
+const GRADED_STEPS: usize = 40;
+/// Floor of the relaxation rate κ in the graded start (v = 0 at the yield point).
+const RATE_FLOOR: f64 = 1e-300;
+/// Unloading is only looked for while cos s exceeds this (at the outlet
+/// L = 0 and g = (3/2)·sin s > 0 anyway).
+const OUTLET_CS: f64 = 1e-12;
+/// Newton on the anisotropic quasi-steady direction (`qs_dir`): iterations,
+/// central-difference step in θ, convergence in θ (rad) and the largest
+/// correction from the isotropic guess that is still trusted (rad).
+const QS_NEWTON_ITERATIONS: usize = 4;
+const QS_DIFF_STEP: f64 = 1e-6;
+const QS_NEWTON_TOL: f64 = 1e-12;
+const QS_MAX_CORRECTION: f64 = 0.5;
+/// Largest number of regula-falsi steps locating the start of unloading.
+const UNLOAD_ITERATIONS: usize = 6;
+/// |g| below which the start of unloading counts as located.
+const UNLOAD_G_TOL: f64 = 1e-13;
+
+impl Strip {
+    /// One RK4 step of length h; (c2, s2) = (cos h/2, sin h/2).
+    ///
+    /// The integrands of the strip sums are Zx·dX/ds = w·nx, Zy·dX/ds = w·ny
+    /// and Zy·X·dX/ds = w·X·ny with w = L·dX/ds = (3/2)c²cos²s; the two
+    /// midpoint stages share their node quantities.
+    #[inline(always)]
+    fn rk4(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+        let c = self.c;
+        let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
+        let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
+        let (x0, xm, x1) = (c * p.sn, c * sm, c * s1);
+        let w = 1.5 * c * c;
+        let (w0, wm, w1) = (w * p.cs * p.cs, w * cm * cm, w * c1 * c1);
+        let k = 2.0 / 3.0;
+        let av = k * self.a;
+        let (vy0, vym, vy1) = (k * self.vy(x0), k * self.vy(xm), k * self.vy(x1));
+        // Anisotropic stiffness: the λ·t·G·n part of `theta_rate` (k·(3/2)·
+        // tan s at the three nodes, capped like there).
+        // Anisotropic stiffness: tan s at the three nodes (capped, see
+        // `theta_rate`).
+        let tan = |sn: f64, cs: f64| sn / cs.max(CS_MIN);
+        let (t0, tm, t1) = if self.gy != 1.0 {
+            (tan(p.sn, p.cs), tan(sm, cm), tan(s1, c1))
+        } else {
+            (0.0, 0.0, 0.0)
+        };
+        let om = |vy: f64, t: f64, nx: f64, ny: f64| self.flow_rate(vy, av, t, nx, ny);
+        let hh = 0.5 * h;
+        // Stage 1 at s0.
+        let (n1x, n1y) = (p.nx, p.ny);
+        let om1 = om(vy0, t0, n1x, n1y);
+        // Stage 2 at the midpoint.
+        let (n2x, n2y) = (n1x - hh * om1 * n1y, n1y + hh * om1 * n1x);
+        let om2 = om(vym, tm, n2x, n2y);
+        // Stage 3 at the midpoint.
+        let (n3x, n3y) = (n1x - hh * om2 * n2y, n1y + hh * om2 * n2x);
+        let om3 = om(vym, tm, n3x, n3y);
+        // Stage 4 at s1.
+        let (n4x, n4y) = (n1x - h * om3 * n3y, n1y + h * om3 * n3x);
+        let om4 = om(vy1, t1, n4x, n4y);
+        let h6 = h / 6.0;
+        let nx = n1x - h6 * (om1 * n1y + 2.0 * om2 * n2y + 2.0 * om3 * n3y + om4 * n4y);
+        let ny = n1y + h6 * (om1 * n1x + 2.0 * om2 * n2x + 2.0 * om3 * n3x + om4 * n4x);
+        let r = (nx * nx + ny * ny).sqrt();
+        let (mx, my) = (2.0 * wm * (n2x + n3x), 2.0 * wm * (n2y + n3y));
+        let mut acc = p.acc;
+        acc.ix += h6 * (w0 * n1x + mx + w1 * n4x);
+        acc.iy += h6 * (w0 * n1y + my + w1 * n4y);
+        acc.ixy += h6 * (x0 * w0 * n1y + xm * my + x1 * w1 * n4y);
+        PState {
+            sn: s1,
+            cs: c1,
+            nx: nx / r,
+            ny: ny / r,
+            acc,
+        }
+    }
+
+    /// Quasi-steady direction (stiff limit): v̂ rotated by −asin(α'/κ).
+    #[inline]
+    fn qs_dir(&self, sn: f64, cs: f64) -> (f64, f64) {
+        let x = self.c * sn;
+        // The stiff limit follows the slip velocity v = (a, vy/gy).
+        let (vx, vy) = (self.a, self.vy(x) / self.gy);
+        let m = vx.hypot(vy);
+        if m == 0.0 || !m.is_finite() {
+            return if m.is_finite() {
+                (1.0, 0.0)
+            } else {
+                (vx.signum() * 0.0 + 1.0, 0.0)
+            };
+        }
+        let (ux, uy) = (vx / m, vy / m);
+        // α' = dα/ds = vx·(dvy/ds)/|v|², κ = (2/3)|v|.
+        let alpha_s = ux * self.q2 / self.gy * self.c * cs / m;
+        let sd = (-alpha_s * 1.5 / m).clamp(-1.0, 1.0);
+        let cd = (1.0 - sd * sd).sqrt();
+        let iso = (ux * cd - uy * sd, ux * sd + uy * cd);
+        if self.gy == 1.0 {
+            return iso;
+        }
+        // Anisotropic stiffness: the quasi-steady direction solves
+        // dθ/ds (theta_rate) = α' — the isotropic formula above only to
+        // leading order (its lag is wrong by O(|gy − 1|/|v|), ≈ 1e-3 in J5 at
+        // |J| ≈ 250). Newton from the isotropic guess, central-difference
+        // derivative; kept only if it converges near the guess.
+        let (sn_, cs_) = (sn, cs);
+        let f = |th: f64| {
+            let (s_, c_) = th.sin_cos();
+            self.theta_rate(sn_, cs_, c_, s_) - alpha_s
+        };
+        let th0 = iso.1.atan2(iso.0);
+        let mut th = th0;
+        for _ in 0..QS_NEWTON_ITERATIONS {
+            let e = QS_DIFF_STEP;
+            let d = (f(th + e) - f(th - e)) / (2.0 * e);
+            if d == 0.0 || !d.is_finite() {
+                return iso;
+            }
+            let step = f(th) / d;
+            th -= step;
+            if !th.is_finite() || (th - th0).abs() > QS_MAX_CORRECTION {
+                return iso;
+            }
+            if step.abs() < QS_NEWTON_TOL {
+                break;
+            }
+        }
+        let (s_, c_) = th.sin_cos();
+        (c_, s_)
+    }
+
+    /// (κ·h, |α'|·h) bounds over a step from s0 to s1: κ = (2/3)|v| is
+    /// largest at an end (vy is linear in X), the rotation rate
+    /// α' = a·q2·c·cos s/|v|² largest where |vy| is smallest.
+    #[inline]
+    fn rates(&self, sn0: f64, cs0: f64, sn1: f64, cs1: f64, h: f64) -> (f64, f64) {
+        let (vy0, vy1) = (self.vy(self.c * sn0), self.vy(self.c * sn1));
+        let a2 = self.a * self.a;
+        let mut kh = (2.0 / 3.0) * (a2 + vy0.abs().max(vy1.abs()).powi(2)).sqrt() * h;
+        if self.gy != 1.0 {
+            // The λ·t·G·n part of `theta_rate` relaxes θ too: bound its rate
+            // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s) (tan s largest at s1).
+            let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
+            kh *= 1.0 + f;
+            kh += (2.0 / 3.0) * f * 1.5 * sn1.abs() / cs1.max(CS_MIN) * h;
+        }
+        // The slip direction v = (a, vy/gy) turns at
+        // α' = a·(q2/gy)·c·cos s/(a² + (vy/gy)²).
+        let (vy0, vy1, q2) = (vy0 / self.gy, vy1 / self.gy, self.q2 / self.gy);
+        let (vmin, cmax) = if (vy0 < 0.0) != (vy1 < 0.0) {
+            (0.0, 1.0)
+        } else {
+            (vy0.abs().min(vy1.abs()), cs0.max(cs1))
+        };
+        let num = (self.a * q2 * self.c).abs() * cmax * h;
+        let den = a2 + vmin * vmin;
+        let ah = if num == 0.0 {
+            0.0
+        } else if den > 0.0 {
+            num / den
+        } else {
+            f64::INFINITY
+        };
+        (kh, ah)
+    }
+
+    /// Advance the plastic state by h (cos/sin of h/2 given): one RK4 step,
+    /// or equal sub-steps where κ·h exceeds the RK4 stability margin or the
+    /// slip direction turns by more than `a_h` within the step (beyond
+    /// MAX_SUB stability sub-steps: the quasi-steady direction).
+    fn advance(
+        &self,
+        p: &PState,
+        h: f64,
+        c2: f64,
+        s2: f64,
+        a_h: f64,
+        cache: &mut (f64, f64, f64),
+    ) -> PState {
+        let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
+        let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
+        let (kh, ah) = self.rates(p.sn, p.cs, s1, c1, h);
+        if kh.is_nan() || (kh <= KAPPA_H && ah <= a_h) {
+            return self.rk4(p, h, c2, s2);
+        }
+        let mk = (kh / KAPPA_H).ceil();
+        let m = mk.max((ah / a_h).ceil().min(MAX_SUB_TURN));
+        // With gy ≠ 1 the bound on κ·h (see `rates`) can exceed the actual
+        // relaxation rate of θ by up to f = 1 + |gy − 1|/min(1, gy), and the
+        // quasi-steady direction is then wrong where the flow is not yet
+        // quasi-steady. Measured against converged solutions: switching at
+        // MAX_SUB gave 20·tol at tol = 1e-3 (gy = 8.7, J ≈ 10), at
+        // MAX_SUB·f still 1.65·tol at 1e-4 (gy = 0.1, k = 0.05, J ≈ 300); at
+        // 4·MAX_SUB·f ≤ 0.62·tol on 1500 random cases (+0–20 % time).
+        let max_sub = if self.gy == 1.0 {
+            MAX_SUB as f64
+        } else {
+            4.0 * MAX_SUB as f64 * (1.0 + (self.gy - 1.0).abs() / self.gy.min(1.0))
+        };
+        if mk <= max_sub {
+            let m = m as usize;
+            let hs = h / m as f64;
+            if cache.0 != hs {
+                let (s2s, c2s) = (0.5 * hs).sin_cos();
+                *cache = (hs, c2s, s2s);
+            }
+            let (_, c2s, s2s) = *cache;
+            let mut q = *p;
+            for _ in 0..m {
+                q = self.rk4(&q, hs, c2s, s2s);
+            }
+            return q;
+        }
+        self.quasi_steady(p, h, c2, s2)
+    }
+
+    /// Quasi-steady direction over h (stiff limit), Simpson's rule.
+    fn quasi_steady(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+        let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
+        let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
+        // Quasi-steady branch, Simpson's rule.
+        let nm = self.qs_dir(sm, cm);
+        let n1 = self.qs_dir(s1, c1);
+        let n0 = (p.nx, p.ny);
+        let a0 = self.deriv(p.sn, p.cs, n0.0, n0.1);
+        let am = self.deriv(sm, cm, nm.0, nm.1);
+        let a1 = self.deriv(s1, c1, n1.0, n1.1);
+        let h6 = h / 6.0;
+        let mut acc = p.acc;
+        acc.ix += h6 * (a0.ix + 4.0 * am.ix + a1.ix);
+        acc.iy += h6 * (a0.iy + 4.0 * am.iy + a1.iy);
+        acc.ixy += h6 * (a0.ixy + 4.0 * am.ixy + a1.ixy);
+        PState {
+            sn: s1,
+            cs: c1,
+            nx: n1.0,
+            ny: n1.1,
+            acc,
+        }
+    }
+
+    /// Plastic flow from yield at X = c·sn (with unit direction n) on.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn plastic(
+        &self,
+        sn: f64,
+        cs: f64,
+        n: (f64, f64),
+        acc: &mut StripSums,
+        allow_unload: bool,
+        (s_step, s_step_smooth): (f64, f64),
+        rec: &mut impl FnMut(Event),
+    ) -> PlasticEnd {
+        rec(Event::Plastic { x: self.c * sn, n });
+        let s0 = sn.atan2(cs);
+        let span = FRAC_PI_2 - s0;
+        if span <= 0.0 {
+            return PlasticEnd::Outlet;
+        }
+        // vy is linear in X, so |v| on the segment is largest at one of its
+        // ends and the slip direction turns fastest where |vy| is smallest:
+        // if κ·h and |α'|·h are within bounds over the whole segment, no step
+        // needs the sub-division test of `advance`. Such non-stiff segments
+        // may use the longer step `s_step_smooth`.
+        let a_h = TURN_PER_STEP * s_step;
+        let steps = |st: f64| ((span / st).ceil() as usize).max(1);
+        let mut nsteps = steps(s_step_smooth);
+        let mut h = span / nsteps as f64;
+        let ok = |h: f64| {
+            let (kh, ah) = self.rates(sn, cs, 1.0, 0.0, h);
+            kh * (1.0 + KAPPA_H_SLACK) <= KAPPA_H && ah <= a_h
+        };
+        let mut nonstiff = ok(h);
+        if !nonstiff {
+            nsteps = steps(s_step);
+            h = span / nsteps as f64;
+            nonstiff = ok(h);
+        }
+        let (s2, c2) = (0.5 * h).sin_cos();
+        // (sub-step, cos, sin of half of it) of the last sub-divided step.
+        let mut cache = (f64::NAN, 1.0, 0.0);
+        let mut p = PState {
+            sn,
+            cs,
+            nx: n.0,
+            ny: n.1,
+            acc: StripSums::default(),
+        };
+        let mut s_cur = s0;
+        let mut i = 0;
+        let h_first =
+            GRADED_KAPPA_H / ((2.0 / 3.0) * self.a.hypot(self.vy(self.c * sn))).max(RATE_FLOOR);
+        loop {
+            // Non-stiff segments: nsteps equal steps. Otherwise steps of at
+            // most h, shortened where the slip direction turns by more than
+            // a_h (near the strip's crossing of the spin pole's line vy = 0),
+            // so that unloading is checked at that resolution too.
+            let (h, c2, s2, last) = if nonstiff {
+                i += 1;
+                (h, c2, s2, i == nsteps)
+            } else {
+                let rem = FRAC_PI_2 - s_cur;
+                i += 1;
+                let mut hv = if rem <= 1.01 * h || i > MAX_STEPS {
+                    rem
+                } else {
+                    h
+                };
+                let (s1, c1) = (s_cur + hv).sin_cos();
+                let (_, ah) = self.rates(p.sn, p.cs, s1, c1.max(0.0), hv);
+                if ah > a_h && i <= MAX_STEPS {
+                    hv *= (a_h / ah).max(1.0 / MAX_SUB_TURN);
+                }
+                // Graded first steps: the lag of n behind the slip direction
+                // at yield relaxes within ~1/κ, which RK4 at κ·h ≈ 2 resolves
+                // poorly; start at κ·h = GRADED_KAPPA_H and double.
+                if i < GRADED_STEPS {
+                    hv = hv.min(h_first * f64::from(1u32 << (i - 1).min(30)));
+                }
+                let (s2v, c2v) = (0.5 * hv).sin_cos();
+                (hv, c2v, s2v, hv >= rem)
+            };
+            let mut q = if nonstiff {
+                self.rk4(&p, h, c2, s2)
+            } else {
+                s_cur += h;
+                self.advance(&p, h, c2, s2, a_h, &mut cache)
+            };
+            if last {
+                q.sn = 1.0;
+                q.cs = 0.0;
+            }
+            if allow_unload && q.cs > OUTLET_CS {
+                let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
+                if g1 < 0.0 {
+                    let best = self.locate_unload(&p, h, g1, a_h, &mut cache);
+                    *acc += best.acc;
+                    let l = 1.5 * self.c * best.cs;
+                    rec(Event::Plastic {
+                        x: self.c * best.sn,
+                        n: (best.nx, best.ny),
+                    });
+                    return PlasticEnd::Unload {
+                        x: self.c * best.sn,
+                        z: (l * best.nx, l * best.ny),
+                    };
+                }
+            }
+            p = q;
+            rec(Event::Plastic {
+                x: self.c * p.sn,
+                n: (p.nx, p.ny),
+            });
+            if last {
+                break;
+            }
+        }
+        *acc += p.acc;
+        PlasticEnd::Outlet
+    }
+
+    /// The state where unloading begins inside the step of length `h` from
+    /// `p` (g ≥ 0 at its start, g = `g1` < 0 at its end): regula falsi
+    /// (Illinois) on the step length, at most [`UNLOAD_ITERATIONS`] steps or
+    /// until |g| < [`UNLOAD_G_TOL`].
+    fn locate_unload(
+        &self,
+        p: &PState,
+        h: f64,
+        g1: f64,
+        a_h: f64,
+        cache: &mut (f64, f64, f64),
+    ) -> PState {
+        let g0 = self.g(p.sn, p.cs, p.nx, p.ny).max(0.0);
+        let (mut tl, mut gl, mut th, mut gh) = (0.0, g0, h, g1);
+        let mut best = *p;
+        let mut side = 0i32;
+        for _ in 0..UNLOAD_ITERATIONS {
+            let t = if gl - gh > 0.0 {
+                tl + (th - tl) * gl / (gl - gh)
+            } else {
+                0.5 * (tl + th)
+            };
+            let (st, ct) = (0.5 * t).sin_cos();
+            let r = self.advance(p, t, ct, st, a_h, cache);
+            let gr = self.g(r.sn, r.cs, r.nx, r.ny);
+            best = r;
+            if gr.abs() < UNLOAD_G_TOL {
+                break;
+            }
+            if gr < 0.0 {
+                th = t;
+                gh = gr;
+                if side == -1 {
+                    gl *= 0.5;
+                }
+                side = -1;
+            } else {
+                tl = t;
+                gl = gr;
+                if side == 1 {
+                    gh *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        best
+    }
+}

@@ -1,0 +1,178 @@
+//! Gauss–Legendre quadrature of the strip sums across the contact (Y = sin φ):
+//! composite (fixed resolution) and adaptive with blended refinement.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use super::{Resolution, Scaled, Strip, StripSums};
+use crate::quad;
+
+/// Composite Gauss–Legendre over Y = sin φ of a strip functional; returns
+/// (J4, J5, J6).
+pub(crate) fn contact_integral(
+    sc: &Scaled,
+    res: &Resolution,
+    mut strip_fn: impl FnMut(&Strip) -> StripSums,
+) -> (f64, f64, f64) {
+    let rule = quad::rule(res.y_points);
+    let np = res.y_panels.max(1);
+    let width = PI / np as f64;
+    let (mut sx, mut sy, mut sxy, mut syx) = (0.0, 0.0, 0.0, 0.0);
+    for p in 0..np {
+        let mid = -FRAC_PI_2 + (p as f64 + 0.5) * width;
+        for &(t, w) in rule {
+            let phi = mid + 0.5 * width * t;
+            let (y, cphi) = phi.sin_cos();
+            let wt = 0.5 * width * w * cphi;
+            let st = strip_fn(&sc.strip(y));
+            sx += wt * st.ix;
+            sy += wt * st.iy;
+            sxy += wt * st.ixy;
+            syx += wt * y * st.ix;
+        }
+    }
+    let j4 = sx / PI;
+    let j5 = sy / PI;
+    // J6 = T/(μN√(ab)) = (1/(π√k))∫∫(Zy·(X+ΔX) − k·Zx·Y) dX dY: the torque
+    // about the spin pole, so that J7 = J1·J4 + J2·J5 + J3·J6 is the
+    // dissipation also for ΔX ≠ 0 (for ΔX = 0 it is the torque about the
+    // contact centre, App. IV eq. 16).
+    let j6 = (sxy + sc.dx * sy - sc.k * syx) / (PI * sc.k.sqrt());
+    (j4, j5, j6)
+}
+
+/// Sums (∫Zx, ∫Zy, ∫Zy·X, ∫Zx·Y over strips) of one φ-panel by an n-point rule.
+fn panel_sums(
+    sc: &Scaled,
+    lo: f64,
+    hi: f64,
+    n: usize,
+    strip_fn: &mut impl FnMut(&Strip) -> StripSums,
+) -> [f64; 4] {
+    let rule = quad::rule(n);
+    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+    let mut acc = [0.0; 4];
+    for &(t, w) in rule {
+        let (y, cphi) = (mid + half * t).sin_cos();
+        let wt = half * w * cphi;
+        let st = strip_fn(&sc.strip(y));
+        acc[0] += wt * st.ix;
+        acc[1] += wt * st.iy;
+        acc[2] += wt * st.ixy;
+        acc[3] += wt * y * st.ix;
+    }
+    acc
+}
+
+fn to_j(sc: &Scaled, s: &[f64; 4]) -> (f64, f64, f64) {
+    (
+        s[0] / PI,
+        s[1] / PI,
+        (s[2] + sc.dx * s[1] - sc.k * s[3]) / (PI * sc.k.sqrt()),
+    )
+}
+
+/// Adaptive composite Gauss–Legendre in φ: a panel is accepted when its
+/// n-point value and the sum over its two halves differ by less than
+/// tol·width/π in J4, J5 and J6 (the halves' value is kept); otherwise both
+/// halves are refined, down to `max_depth` levels.
+pub(crate) fn contact_integral_adaptive(
+    sc: &Scaled,
+    n: usize,
+    tol: f64,
+    max_depth: u32,
+    strip_fn: impl FnMut(&Strip) -> StripSums,
+) -> (f64, f64, f64) {
+    contact_integral_adaptive_at(
+        sc,
+        &[-FRAC_PI_2, 0.0, FRAC_PI_2],
+        n,
+        tol,
+        max_depth,
+        strip_fn,
+    )
+}
+
+/// [`contact_integral_adaptive`] starting from the panels between the
+/// sorted breakpoints `breaks` (in φ, from −π/2 to π/2).
+pub(crate) fn contact_integral_adaptive_at(
+    sc: &Scaled,
+    breaks: &[f64],
+    n: usize,
+    tol: f64,
+    max_depth: u32,
+    mut strip_fn: impl FnMut(&Strip) -> StripSums,
+) -> (f64, f64, f64) {
+    let mut total = [0.0; 4];
+    // (lo, hi, value, depth, weight)
+    let mut stack: Vec<(f64, f64, [f64; 4], u32, f64)> = Vec::with_capacity(32);
+    for w in breaks.windows(2) {
+        let (lo, hi) = (w[0], w[1]);
+        if hi > lo {
+            let v = panel_sums(sc, lo, hi, n, &mut strip_fn);
+            stack.push((lo, hi, v, 0, 1.0));
+        }
+    }
+    while let Some((lo, hi, coarse, depth, weight)) = stack.pop() {
+        let m = 0.5 * (lo + hi);
+        let l = panel_sums(sc, lo, m, n, &mut strip_fn);
+        let r = panel_sums(sc, m, hi, n, &mut strip_fn);
+        let fine = [l[0] + r[0], l[1] + r[1], l[2] + r[2], l[3] + r[3]];
+        let d = [
+            fine[0] - coarse[0],
+            fine[1] - coarse[1],
+            fine[2] - coarse[2],
+            fine[3] - coarse[3],
+        ];
+        let (e4, e5, e6) = to_j(sc, &d);
+        let err = e4.abs().max(e5.abs()).max(e6.abs());
+        let allowed = tol * (hi - lo) / PI;
+        // Share of the refined value: 0 up to BLEND.0·allowed, 1 from
+        // BLEND.1·allowed on, a smooth step in between, so that the result is a
+        // continuous function of the inputs (no jump where a panel's
+        // decision flips).
+        let refine = if depth >= max_depth || err.is_nan() {
+            0.0
+        } else {
+            smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
+        };
+        if refine < 1.0 {
+            let w = weight * (1.0 - refine);
+            for i in 0..4 {
+                total[i] += w * fine[i];
+            }
+        }
+        if refine > 0.0 {
+            stack.push((lo, m, l, depth + 1, weight * refine));
+            stack.push((m, hi, r, depth + 1, weight * refine));
+        }
+    }
+    to_j(sc, &total)
+}
+
+/// Blend between a panel's value and its refinement: from BLEND.0 to BLEND.1
+/// times the allowed change (see `contact_integral_adaptive_at`).
+const BLEND: (f64, f64) = (1.0, 2.0);
+
+/// 0 for t ≤ 0, 1 for t ≥ 1, C¹ cubic in between.
+#[inline]
+fn smooth_step(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Elastic/plastic (J4, J5, J6), adaptive in Y; s-step `s_step`, or
+/// `s_step_smooth` (≥ `s_step`) on plastic segments that are non-stiff at it.
+pub(crate) fn solve_adaptive(
+    sc: &Scaled,
+    n: usize,
+    tol: f64,
+    s_step: f64,
+    s_step_smooth: f64,
+) -> (f64, f64, f64) {
+    contact_integral_adaptive(sc, n, tol, 10, |s| s.integrate(s_step, s_step_smooth))
+}
+
+/// Elastic/plastic (J4, J5, J6) by strip integration.
+pub(crate) fn solve(sc: &Scaled, res: &Resolution) -> (f64, f64, f64) {
+    contact_integral(sc, res, |s| s.integrate(res.s_step, res.s_step))
+}

@@ -1,0 +1,32 @@
+//! Reference solutions for tests and convergence studies: the strip
+//! integrator at an explicit, fixed resolution and the independent grid
+//! scheme. [`crate::evaluate`] is the API for applications.
+
+use crate::{Inputs, Outputs, Properties, Resolution, RheologyError, ep, finish};
+
+/// Elastic/plastic strip integration (RK4 on the plastic segments, see
+/// `ep.rs`) at an explicit, fixed resolution: `y_panels` × `y_points`
+/// Gauss–Legendre strips in φ (Y = sin φ) and the s-step `s_step`. No
+/// closed-form fast path; max|J| > [`crate::J_RIGID`] returns the
+/// rigid/plastic solution.
+pub fn elastic_plastic(inp: &Inputs, res: &Resolution) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    let m = inp.j1.abs().max(inp.j2.abs()).max(inp.j3.abs());
+    if m > crate::J_RIGID {
+        return crate::rigid_plastic(inp, crate::Accuracy { tol: 1e-6 });
+    }
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
+    let (j4, j5, j6) = ep::solve(&sc, res);
+    Ok(finish(inp, j4, j5, j6))
+}
+
+/// The grid scheme of [`crate::props`] for any property combination, with
+/// `cells` and 2·`cells` cells per strip (and as many strips),
+/// Richardson-extrapolated (clamped to 10..=20000). Independent of the
+/// strip integrator; used to cross-check it.
+pub fn grid(inp: &Inputs, props: Properties, cells: usize) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
+    let (j4, j5, j6) = crate::props::solve(&sc, props, cells.clamp(10, 20000));
+    Ok(finish(inp, j4, j5, j6))
+}

@@ -1,0 +1,62 @@
+//! Continuity of the elastic/plastic outputs in the inputs: across J3 = 0
+//! (the zero-spin closed form against the integrator) and along lines in
+//! J space (no jumps from discretisation choices).
+#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+
+use traction_rheology::reference::elastic_plastic;
+use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, evaluate};
+
+fn ev(i: &Inputs, tol: f64) -> Outputs {
+    evaluate(i, Model::ElasticPlastic, Accuracy::new(tol).unwrap()).unwrap()
+}
+
+#[test]
+fn spin_moment_is_continuous_at_zero_spin() {
+    // With side slip and no spin the lateral traction's centre lies behind the
+    // contact centre: J6 = J2/(4k(1+S²)²) (closed::combined_slip_torque),
+    // plus ΔX·J5/√k about the spin pole. Against (a) the evaluation at
+    // J3 = ±1e-9 (the integrator; J6 changes by O(1e-9) there) at tol 1e-6,
+    // and (b) the fixed-resolution strip integrator at J3 = 0 itself
+    // (independent of the closed form: 40 panels × 8 points, h = 0.01,
+    // converged to ≈ 1e-7, see tests/convergence.rs): 2e-6 each.
+    let tol = 1e-6;
+    let res = Resolution {
+        y_panels: 40,
+        y_points: 8,
+        s_step: 0.01,
+    };
+    for &k in &[0.05, 0.2, 0.5, 1.0, 3.0, 20.0] {
+        for &(j1, j2, dx) in &[
+            (0.0, 1.0, 0.0),
+            (0.7, -0.4, 0.0),
+            (-2.0, 3.0, 0.0),
+            (0.3, 0.2, 0.25),
+            (5.0, -8.0, -0.1),
+        ] {
+            let at = |j3: f64| ev(&Inputs::with_offset(k, j1, j2, j3, dx).unwrap(), tol);
+            let zero = at(0.0);
+            for j3 in [1e-9, -1e-9] {
+                let o = at(j3);
+                let d = (o.j4 - zero.j4)
+                    .abs()
+                    .max((o.j5 - zero.j5).abs())
+                    .max((o.j6 - zero.j6).abs());
+                assert!(
+                    d < 2e-6,
+                    "k={k} J=({j1},{j2},{j3}) dX={dx}: {o:?} vs {zero:?}"
+                );
+            }
+            let r =
+                elastic_plastic(&Inputs::with_offset(k, j1, j2, 0.0, dx).unwrap(), &res).unwrap();
+            assert!(
+                (r.j6 - zero.j6).abs() < 2e-6,
+                "k={k} J=({j1},{j2},0) dX={dx}: integrator J6 {} vs {}",
+                r.j6,
+                zero.j6
+            );
+        }
+    }
+    // The figure of the defect report: k = 0.5, J = (0, 1, 0).
+    let o = ev(&Inputs::new(0.5, 0.0, 1.0, 0.0).unwrap(), 1e-4);
+    assert!((o.j6 - 0.140_14).abs() < 1e-5, "{}", o.j6);
+}

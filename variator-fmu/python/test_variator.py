@@ -1,0 +1,143 @@
+"""Importer tests of ToroidalVariator.fmu (run by scripts/fmu_test.sh).
+
+The FMU path comes from the environment variable TRACTION_VARIATOR_FMU.
+"""
+
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, os.path.dirname(__file__))
+
+import drivetrain  # noqa: E402
+
+FMU = os.environ.get("TRACTION_VARIATOR_FMU", "")
+VENV_BIN = os.path.dirname(sys.executable)
+
+# Defaults of the FMU (modelDescription start values).
+R0, E0, THETA0 = 0.040, 0.065, math.radians(62.5)
+
+
+def ratio(tilt):
+    """Kinematic speed ratio r_in/r_out of the half-toroidal cavity."""
+    return (E0 - R0 * math.cos(THETA0 - tilt)) / (E0 - R0 * math.cos(THETA0 + tilt))
+
+
+@pytest.fixture(scope="module")
+def fmu_path():
+    if not os.path.isfile(FMU):
+        pytest.fail(f"TRACTION_VARIATOR_FMU={FMU!r} is not a file: build it with `traction fmu build --model variator`")
+    return FMU
+
+
+def test_fmpy_validate_reports_no_problem(fmu_path):
+    from fmpy.validation import validate_fmu
+
+    assert validate_fmu(fmu_path) == []
+    r = subprocess.run([os.path.join(VENV_BIN, "fmpy"), "validate", fmu_path], capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_fmutool_check_reports_no_problem(fmu_path):
+    r = subprocess.run(
+        [os.path.join(VENV_BIN, "fmutool"), "-input", fmu_path, "-check"], capture_output=True, text=True
+    )
+    text = r.stdout + r.stderr
+    assert r.returncode == 0, text
+    levels = [line.split("|", 1)[0].strip() for line in text.splitlines() if "|" in line]
+    assert not {"ERROR", "WARNING", "CRITICAL"} & set(levels), text
+    assert "No semantic error against the FMI-2 standard" in text, text
+
+
+def test_simulate_fmu_sweeps_the_ratio_with_power_balance(fmu_path):
+    from fmpy import simulate_fmu
+
+    # Tilt ramps from -0.4 to 0.4 rad; the output runs 1 % slower than the
+    # geometry gives at each tilt.
+    t = np.linspace(0.0, 0.2, 201)
+    tilt = -0.4 + 4.0 * t
+    w_in = np.full_like(t, 300.0)
+    w_out = np.array([0.99 * 300.0 * ratio(g) for g in tilt])
+    signals = np.array(
+        list(zip(t, w_in, w_out, tilt)),
+        dtype=[("time", float), ("omega_in", float), ("omega_out", float), ("tilt_angle", float)],
+    )
+    res = simulate_fmu(
+        fmu_path,
+        fmi_type="CoSimulation",
+        stop_time=0.2,
+        step_size=1e-3,
+        output_interval=1e-3,
+        input=signals,
+        start_values={"rheology_map": False},
+        output=[
+            "tilt_angle",
+            "speed_ratio",
+            "torque_in",
+            "torque_out",
+            "power_in",
+            "power_out",
+            "power_loss",
+            "efficiency",
+            "spin_loss",
+            "roller_side_force",
+            "slip_in",
+            "slip_out",
+            "regime_in",
+        ],
+    )
+    assert len(res) > 150
+    for row in res:
+        assert abs(row["speed_ratio"] - ratio(row["tilt_angle"])) < 1e-12
+        assert row["torque_in"] < 0.0 < row["torque_out"]
+        p_in = -row["torque_in"] * 300.0
+        assert abs(p_in - row["power_in"]) < 1e-9 * p_in
+        # Power balance of the quasi-static roller solve (crate docs: ~1e-9).
+        assert abs(row["power_in"] - row["power_out"] - row["power_loss"]) < 1e-7 * p_in
+        assert 0.85 < row["efficiency"] < 1.0
+        assert 0.0 <= row["spin_loss"] <= row["power_loss"]
+        assert row["slip_in"] > 0.0 > row["slip_out"]
+        assert row["regime_in"] in (1, 2, 3)
+    # Ratio symmetry over the sweep: ratio(g) ratio(-g) = 1.
+    first, last = res[0], res[-1]
+    assert abs(first["tilt_angle"] + last["tilt_angle"]) < 1e-9
+    assert abs(first["speed_ratio"] * last["speed_ratio"] - 1.0) < 1e-9
+
+
+def test_drivetrain_engine_variator_vehicle(fmu_path):
+    hist = drivetrain.run(fmu_path)
+    # The vehicle has accelerated, the ratio swept from underdrive to overdrive,
+    # and every step closed its power balance.
+    assert hist[-1]["vehicle_speed"] > 2.0 * hist[0]["vehicle_speed"]
+    ratios = [h["speed_ratio"] for h in hist]
+    assert min(ratios) < 0.7 and max(ratios) > 1.4
+    for h in hist[10:]:
+        assert abs(h["power_in"] - h["power_out"] - h["power_loss"]) <= 1e-7 * max(abs(h["power_in"]), 1.0)
+
+
+def test_libcosimpy_runs_two_instances(fmu_path):
+    from fmpy import read_model_description
+    from libcosimpy.CosimExecution import CosimExecution
+    from libcosimpy.CosimObserver import CosimObserver
+    from libcosimpy.CosimSlave import CosimLocalSlave
+
+    vr = {v.name: v.valueReference for v in read_model_description(fmu_path).modelVariables}
+    step_ns = 1_000_000
+    ex = CosimExecution.from_step_size(step_size=step_ns)
+    obs = CosimObserver.create_last_value()
+    ex.add_observer(obs)
+    cases = {"underdrive": 0.3, "overdrive": -0.3}
+    idx = {}
+    for name, g in cases.items():
+        idx[name] = ex.add_local_slave(CosimLocalSlave(fmu_path=fmu_path, instance_name=name))
+        assert ex.real_initial_value(idx[name], vr["tilt_angle"], g)
+        assert ex.real_initial_value(idx[name], vr["omega_out"], 0.99 * 300.0 * ratio(g))
+    assert ex.simulate_until(target_time=20 * step_ns)
+    for name, g in cases.items():
+        r, tin, tout = obs.last_real_values(idx[name], [vr["speed_ratio"], vr["torque_in"], vr["torque_out"]])
+        assert abs(r - ratio(g)) < 1e-12
+        assert tin < 0.0 < tout
