@@ -1,8 +1,8 @@
 //! One function per report table. Each returns a [`TableResult`] with the
 //! tolerance of the corresponding golden test (`tests/tests/*.rs`) and the
 //! figures drawn from it ([`Figure`]). One module per table family: [`hertz`]
-//! (Tables 2-1..2-3), [`spin`] (2-5), [`compliance`] (4-3), [`appendix_i`],
-//! [`appendix_iii`], [`traction`] (Appendices VI, VII-A, VII-B).
+//! (Tables 2-1..2-3), [`spin`] (2-5), [`compliance`] (4-3), [`appendix_i`](mod@appendix_i),
+//! [`appendix_iii`](mod@appendix_iii), [`traction`] (Appendices VI, VII-A, VII-B).
 //!
 //! Printed values come from the curated data in `fluids/data/` (through
 //! `traction-fluids`, or [`crate::data`] for Appendices VI, VII-A, VII-B);
