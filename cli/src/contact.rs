@@ -2,7 +2,7 @@
 //! batch from CSV.
 //!
 //! Input columns (SI units): `rx1,ry1,rx2,ry2` (principal radii, m; flat =
-//! `inf`), `e1,nu1,e2,nu2` (Pa, -), `load` (N), `u` (rolling speed, m/s),
+//! `inf` or 0), `e1,nu1,e2,nu2` (Pa, -), `load` (N), `u` (rolling speed, m/s),
 //! `du` (slip ΔU, m/s), `dv` (side slip ΔV, m/s), `omega` (spin, rad/s),
 //! `theta` (inlet temperature, °C), and the fluid: `fluid` (`santotrac-50` or
 //! `tdf-88`, the report's correlations) and/or `m,mu` (user slope and peak
@@ -258,8 +258,9 @@ fn solve_row(
     model: &ModelOptions,
 ) -> Result<Evaluation, CliError> {
     let v = |c: &str| table.f64(row, c);
-    let body1 = Body::new(v("rx1")?, v("ry1")?, v("e1")?, v("nu1")?);
-    let body2 = Body::new(v("rx2")?, v("ry2")?, v("e2")?, v("nu2")?);
+    let r = |c: &str| v(c).map(crate::table::radius); // 0 or inf = flat, as in the FMU
+    let body1 = Body::new(r("rx1")?, r("ry1")?, v("e1")?, v("nu1")?);
+    let body2 = Body::new(r("rx2")?, r("ry2")?, v("e2")?, v("nu2")?);
     let name = if table.has("fluid") {
         Some(table.str(row, "fluid")?.trim().to_string()).filter(|s| !s.is_empty())
     } else {

@@ -13,7 +13,8 @@ use traction_contact::{Body, Fluid, OperatingState, TractionContact};
 
 use crate::contact::{ModelOptions, report_fluid};
 use crate::error::CliError;
-use crate::table::{TableWriter, fmt_f64};
+use crate::table::{TableWriter, fmt_f64, radius};
+use traction_hertz::Range;
 
 /// Which slip ratio is swept.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -27,7 +28,7 @@ pub enum SweepDirection {
 /// Arguments of `traction curve`.
 #[derive(Debug, Args)]
 pub struct CurveArgs {
-    /// Radius of body 1 along the rolling direction x (m; `inf` = flat).
+    /// Radius of body 1 along the rolling direction x (m; `inf` or 0 = flat).
     #[arg(long)]
     pub rx1: f64,
     /// Radius of body 1 across x (m).
@@ -124,22 +125,21 @@ const COLUMNS: [&str; 25] = [
     "regime",
 ];
 
+/// Valid number of curve points: at least a segment, at most what a plot or a
+/// spreadsheet reads comfortably.
+const POINTS_RANGE: Range = Range::closed(2.0, 100_000.0);
+
 /// Run the subcommand.
 pub fn run(args: CurveArgs) -> Result<(), CliError> {
-    if !(2..=100_000).contains(&args.points) {
-        return Err(CliError::Usage(format!(
-            "--points = {} is out of range: must be in 2..=100000",
-            args.points
-        )));
-    }
+    POINTS_RANGE
+        .check("--points", args.points as f64)
+        .map_err(CliError::model)?;
     for (name, v) in [
         ("--from", args.from),
         ("--to", args.to),
         ("--other", args.other),
     ] {
-        if !v.is_finite() {
-            return Err(CliError::Usage(format!("{name} = {v} must be finite")));
-        }
+        Range::FINITE.check(name, v).map_err(CliError::model)?;
     }
     let opts = args.model.options().map_err(CliError::Usage)?;
     let fluid = match (&args.fluid, args.m, args.mu) {
@@ -153,8 +153,8 @@ pub fn run(args: CurveArgs) -> Result<(), CliError> {
             ));
         }
     };
-    let b1 = Body::new(args.rx1, args.ry1, args.e, args.nu);
-    let b2 = Body::new(args.rx2, args.ry2, args.e, args.nu);
+    let b1 = Body::new(radius(args.rx1), radius(args.ry1), args.e, args.nu);
+    let b2 = Body::new(radius(args.rx2), radius(args.ry2), args.e, args.nu);
     let contact = TractionContact::new(&b1, &b2, fluid, opts).map_err(CliError::model)?;
     let load = match (args.load, args.p0) {
         (Some(n), None) => n,

@@ -1,21 +1,20 @@
 //! The CLI's error type: every failure names what went wrong and where.
 
-use std::fmt;
-
 /// A CLI failure. Displayed on stderr as `error: ...` with a non-zero exit.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum CliError {
-    /// Reading or writing a file or stream failed.
-    #[error("{context}: {source}")]
+    /// Reading or writing a file or stream failed (the I/O error is the source).
+    #[error("{context}")]
     Io {
         /// What was being read or written.
         context: String,
         /// The underlying error.
         source: std::io::Error,
     },
-    /// The CSV could not be parsed at all (bad quoting, ragged rows, ...).
-    #[error("{context}: {source}")]
+    /// The CSV could not be parsed at all (bad quoting, ragged rows, ...); the
+    /// CSV error is the source.
+    #[error("{context}")]
     Csv {
         /// What was being read or written.
         context: String,
@@ -67,8 +66,75 @@ pub enum CliError {
 }
 
 impl CliError {
-    /// Wrap a model error (anything displayable) as a [`CliError::Model`].
-    pub fn model(e: impl fmt::Display) -> Self {
-        CliError::Model(e.to_string())
+    /// Wrap a model error as a [`CliError::Model`], with its sources ([`chain`]).
+    pub fn model(e: impl std::error::Error) -> Self {
+        CliError::Model(chain(&e))
+    }
+}
+
+/// Library advice that names a Rust API, and what the CLI calls the same thing.
+const CLI_WORDS: [(&str, &str); 1] = [(
+    "use Policy::Extrapolate to get a flagged extrapolation",
+    "use --envelope extrapolate for a flagged extrapolation or --envelope clamp",
+)];
+
+/// `text` with the library's API names replaced by the CLI options that do the
+/// same ([`CLI_WORDS`]).
+pub fn cli_words(text: &str) -> String {
+    CLI_WORDS
+        .iter()
+        .fold(text.to_string(), |t, (api, cli)| t.replace(api, cli))
+}
+
+/// An error and its sources joined by `": "`, as the command prints it, in the
+/// CLI's words ([`cli_words`]). A source whose text the message already ends
+/// with is not repeated.
+pub fn chain(e: &dyn std::error::Error) -> String {
+    let mut text = e.to_string();
+    let mut source = e.source();
+    while let Some(s) = source {
+        let part = s.to_string();
+        if !text.ends_with(&part) {
+            text.push_str(": ");
+            text.push_str(&part);
+        }
+        source = s.source();
+    }
+    cli_words(&text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[derive(Debug, thiserror::Error)]
+    #[error("inner")]
+    struct Inner;
+
+    #[derive(Debug, thiserror::Error)]
+    enum Outer {
+        #[error("outer")]
+        Sourced(#[source] Inner),
+        #[error("outer: {0}")]
+        Repeating(#[from] Inner),
+    }
+
+    #[test]
+    fn chain_prints_each_source_once() {
+        assert_eq!(chain(&Outer::Sourced(Inner)), "outer: inner");
+        assert_eq!(chain(&Outer::Repeating(Inner)), "outer: inner");
+        let io = CliError::Io {
+            context: "reading x.csv".into(),
+            source: std::io::Error::other("gone"),
+        };
+        assert_eq!(chain(&io), "reading x.csv: gone");
+        let row = CliError::Usage(
+            "U = 99 is outside the data envelope [10, 80] of S50 μ; use Policy::Extrapolate to get a flagged extrapolation".into(),
+        );
+        let t = chain(&row);
+        assert!(
+            t.contains("--envelope extrapolate") && !t.contains("Policy::"),
+            "{t}"
+        );
     }
 }

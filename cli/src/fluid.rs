@@ -14,7 +14,7 @@
 //! error naming the row and the variable.
 
 use clap::Args;
-use traction_fluids::{Fluid, FluidName, Policy, Quantity, Query, TemperatureForm};
+use traction_fluids::{Fluid, FluidError, FluidName, Policy, Quantity, Query, TemperatureForm};
 
 use crate::error::CliError;
 use crate::fit::{FluidArg, TemperatureArg};
@@ -103,8 +103,23 @@ pub fn run(args: FluidArgs) -> Result<(), CliError> {
         };
         let q0 = Query { z: 0.0, ..q };
         let ev = |quantity: Quantity, q: &Query| {
-            fl.evaluate(quantity, q, policy)
-                .map_err(|e| table.row_error(row, format!("{}: {e}", quantity_name(quantity))))
+            fl.evaluate(quantity, q, policy).map_err(|e| {
+                let message = match e {
+                    // The library names its API; the CLI names its option.
+                    FluidError::OutsideEnvelope {
+                        quantity,
+                        value,
+                        min,
+                        max,
+                        correlation,
+                    } => format!(
+                        "{quantity} = {value} is outside the data envelope [{min}, {max}] of \
+                         {correlation}; use --extrapolate to get a flagged extrapolation"
+                    ),
+                    e => e.to_string(),
+                };
+                table.row_error(row, format!("{}: {message}", quantity_name(quantity)))
+            })
         };
         let m = ev(Quantity::Slope, &q0)?;
         let mu = ev(Quantity::Mu, &q0)?;

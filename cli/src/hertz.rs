@@ -2,7 +2,7 @@
 //!
 //! Input columns (SI units): `rx1,ry1,rx2,ry2` (principal radii in m along
 //! the rolling direction x and across it; convex > 0, concave < 0, flat =
-//! `inf`), `e1,nu1,e2,nu2` (Young's modulus in Pa and Poisson's ratio of each
+//! `inf` or 0 as in the FMU), `e1,nu1,e2,nu2` (Young's modulus in Pa and Poisson's ratio of each
 //! body), and either `load` (N) or `p0` (maximum Hertz pressure, Pa) — a
 //! table may have both columns as long as each row fills exactly one. Other
 //! columns (labels) are passed through unchanged.
@@ -11,6 +11,10 @@
 //! shape_b,c` (m, m, -, Pa, N, m, Pa, -, -, m/Pa); with `--all-columns` also
 //! `p_mean,area,approach,eccentricity_sq,elliptic_k,elliptic_e` (Pa, m², m,
 //! -, -, -; `eccentricity_sq` is the elliptic parameter m = e² of K and E).
+//! Every column name appears once: the input's `load` and `p0` columns are not
+//! repeated (the computed `load` and `p0` hold the given value where a row gave
+//! it), and any other input column named like a computed one is written as
+//! `input_NAME`.
 //! Every row is validated before anything is written; a bad row stops the
 //! command with an error naming the row, the line and the column or quantity.
 
@@ -18,7 +22,7 @@ use clap::{Args, ValueEnum};
 use traction_hertz::{Body, Contact, Geometry, Method};
 
 use crate::error::CliError;
-use crate::table::{Table, TableWriter, fmt_f64, output_headers};
+use crate::table::{Table, TableWriter, fmt_f64, radius};
 
 /// Input columns every row needs.
 const INPUT_COLUMNS: [&str; 8] = ["rx1", "ry1", "rx2", "ry2", "e1", "nu1", "e2", "nu2"];
@@ -50,7 +54,7 @@ pub enum MethodArg {
 /// Arguments of `traction hertz`.
 #[derive(Debug, Args)]
 pub struct HertzArgs {
-    /// Input CSV (`-` for stdin). Columns rx1,ry1,rx2,ry2 (m, flat = inf),
+    /// Input CSV (`-` for stdin). Columns rx1,ry1,rx2,ry2 (m, flat = inf or 0),
     /// e1,nu1,e2,nu2 (Pa, -), and load (N) or p0 (Pa).
     #[arg(long, default_value = "-")]
     pub input: String,
@@ -69,8 +73,9 @@ pub struct HertzArgs {
 /// Solve one row.
 fn solve_row(table: &Table, row: usize, method: Method) -> Result<Contact, CliError> {
     let v = |c: &str| table.f64(row, c);
-    let body1 = Body::new(v("rx1")?, v("ry1")?, v("e1")?, v("nu1")?);
-    let body2 = Body::new(v("rx2")?, v("ry2")?, v("e2")?, v("nu2")?);
+    let r = |c: &str| table.f64(row, c).map(radius);
+    let body1 = Body::new(r("rx1")?, r("ry1")?, v("e1")?, v("nu1")?);
+    let body2 = Body::new(r("rx2")?, r("ry2")?, v("e2")?, v("nu2")?);
     let load = table.opt_f64(row, "load")?;
     let p0 = table.opt_f64(row, "p0")?;
     let geometry =
@@ -114,6 +119,24 @@ fn output_cells(c: &Contact, all_columns: bool) -> Vec<String> {
     v.into_iter().map(fmt_f64).collect()
 }
 
+/// The input columns written before the computed ones (indices and names):
+/// `load` and `p0` are carried by the computed columns of the same name, and
+/// another input column named like a computed one becomes `input_NAME`.
+fn echoed_columns(input: &[String], computed: &[&str]) -> (Vec<usize>, Vec<String>) {
+    input
+        .iter()
+        .enumerate()
+        .filter(|(_, h)| !matches!(h.as_str(), "load" | "p0"))
+        .map(|(i, h)| {
+            if computed.contains(&h.as_str()) {
+                (i, format!("input_{h}"))
+            } else {
+                (i, h.clone())
+            }
+        })
+        .unzip()
+}
+
 /// Run the subcommand.
 pub fn run(args: HertzArgs) -> Result<(), CliError> {
     let table = Table::read(&args.input)?;
@@ -130,20 +153,37 @@ pub fn run(args: HertzArgs) -> Result<(), CliError> {
         MethodArg::HamrockBrewe => Method::HamrockBrewe,
     };
     // Solve every row before writing anything: a bad row leaves no partial output.
-    let mut out = Vec::with_capacity(table.len());
-    for row in 0..table.len() {
-        let contact = solve_row(&table, row, method)?;
-        let mut cells = table.rows[row].clone();
-        cells.extend(output_cells(&contact, args.all_columns));
-        out.push(cells);
-    }
     let mut extra: Vec<&str> = OUTPUT_COLUMNS.to_vec();
     if args.all_columns {
         extra.extend(EXTRA_COLUMNS);
     }
-    let mut w = TableWriter::create(&args.output, &output_headers(&table, &extra))?;
+    let (echo, mut headers) = echoed_columns(&table.headers, &extra);
+    headers.extend(extra.iter().map(|s| s.to_string()));
+    let mut out = Vec::with_capacity(table.len());
+    for row in 0..table.len() {
+        let contact = solve_row(&table, row, method)?;
+        let mut cells: Vec<String> = echo.iter().map(|&i| table.rows[row][i].clone()).collect();
+        cells.extend(output_cells(&contact, args.all_columns));
+        out.push(cells);
+    }
+    let mut w = TableWriter::create(&args.output, &headers)?;
     for cells in &out {
         w.write_row(cells)?;
     }
     w.finish()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_column_name_is_written_twice() {
+        let input: Vec<String> = ["rx1", "load", "p0", "a", "label"]
+            .map(String::from)
+            .to_vec();
+        let (idx, names) = echoed_columns(&input, &OUTPUT_COLUMNS);
+        assert_eq!(idx, vec![0_usize, 3, 4]);
+        assert_eq!(names, ["rx1", "input_a", "label"]);
+    }
 }

@@ -88,7 +88,7 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            eprintln!("error: {}", error::chain(&e));
             ExitCode::FAILURE
         }
     }

@@ -15,7 +15,7 @@ use traction_reproduce::{
     missing_tables, plot, summarise, summary_markdown, write_csv, write_summary_markdown,
 };
 
-use crate::error::CliError;
+use crate::error::{CliError, chain};
 
 /// Arguments of `traction reproduce`.
 #[derive(Debug, Args)]
@@ -95,7 +95,7 @@ pub fn run(args: ReproduceArgs) -> Result<(), CliError> {
         cat.par_iter()
             .map(|(id, f)| {
                 pb.set_message(id.to_string());
-                let r = f().map_err(|e| CliError::Model(format!("{id}: {e}")));
+                let r = f().map_err(|e| CliError::Model(format!("{id}: {}", chain(&e))));
                 pb.inc(1);
                 r
             })

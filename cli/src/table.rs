@@ -3,7 +3,8 @@
 //! Input: a header row, then data rows; lines starting with `#` are comments;
 //! `-` as the path means stdin. Numbers are parsed as `f64`; `inf`/`-inf` are
 //! accepted (a flat surface has an infinite radius), NaN never is. Every error
-//! names the input, the 1-based data row, the line and the column.
+//! names the input, the 1-based data row, the line and the column. A radius of
+//! 0 means flat too, as in the FMU ([`radius`]).
 //!
 //! Output: the input columns unchanged, followed by the computed columns,
 //! numbers in Rust's shortest round-trip form; `-` means stdout.
@@ -11,6 +12,17 @@
 use std::io::{Read, Write};
 
 use crate::error::CliError;
+
+/// A radius of curvature as the CLI takes it: 0 and ±inf both mean a flat
+/// profile (the FMU's convention, docs/decisions/0014), returned as the
+/// library's flat = +inf; any other value is passed on for the library to check.
+pub fn radius(r: f64) -> f64 {
+    if r == 0.0 || r.is_infinite() {
+        f64::INFINITY
+    } else {
+        r
+    }
+}
 
 /// A CSV table read fully into memory (the inputs are small batch files).
 #[derive(Debug, Clone)]

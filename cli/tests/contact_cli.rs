@@ -1,6 +1,6 @@
 //! Integration tests of `traction contact` and `traction curve`: the binary on
 //! CSV through stdin/stdout, compared with the library, and its errors.
-// Helpers outside #[test] functions unwrap too: any failure is a test failure.
+// Functions outside #[test] functions unwrap too: any failure is a test failure.
 #![allow(clippy::unwrap_used)]
 
 mod common;

@@ -1,5 +1,5 @@
 //! CLI tests of `traction field` (the J+T stress field on a grid).
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
 
 mod common;
 use common::{fails, ok};

@@ -1,6 +1,6 @@
 //! Integration tests of `traction hertz`: the binary run on CSV through
 //! stdin/stdout and files, compared with the library, and its errors.
-// Helpers outside #[test] functions unwrap too: any failure is a test failure.
+// Functions outside #[test] functions unwrap too: any failure is a test failure.
 #![allow(clippy::unwrap_used)]
 
 mod common;
@@ -27,6 +27,10 @@ fn report_cases_example_matches_the_library() {
     let n_in = header.len() - OUT_COLUMNS.len();
     assert_eq!(&header[n_in..], &OUT_COLUMNS);
     assert_eq!(rows.len(), 1 + 8, "the 8 tests of Table 2-3");
+    // Every column name once: the input's p0 is carried by the computed p0.
+    for (i, h) in header.iter().enumerate() {
+        assert!(!header[i + 1..].contains(h), "{h} twice in {header:?}");
+    }
     let col = |name: &str| header.iter().position(|h| h == name).unwrap();
     let f = |row: &[String], name: &str| -> f64 { row[col(name)].parse().unwrap() };
     for row in &rows[1..] {
@@ -34,7 +38,7 @@ fn report_cases_example_matches_the_library() {
         // code path, shortest round-trip formatting): compared bit for bit.
         let b1 = Body::new(f(row, "rx1"), f(row, "ry1"), f(row, "e1"), f(row, "nu1"));
         let b2 = Body::new(f(row, "rx2"), f(row, "ry2"), f(row, "e2"), f(row, "nu2"));
-        let p0: f64 = row[col("p0")].parse().unwrap(); // first p0 = input
+        let p0: f64 = row[col("p0")].parse().unwrap(); // the input's p0, computed = given
         let c = Geometry::new(&b1, &b2).unwrap().at_p0(p0).unwrap();
         let out: Vec<f64> = row[n_in..].iter().map(|s| s.parse().unwrap()).collect();
         let g = c.geometry;
@@ -88,15 +92,20 @@ fn load_or_p0_per_row_and_file_output() {
     std::fs::remove_dir_all(&dir).unwrap();
     let rows: Vec<Vec<&str>> = text.lines().map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 3);
-    assert_eq!(rows[1][10], "by load");
+    // The input's load and p0 are not repeated: 8 radii/materials, the label,
+    // then the computed columns.
+    assert_eq!(rows[0][8..11], ["label", "a", "b"]);
+    assert_eq!(rows[1][8], "by load");
     // Sphere on flat closed form: a = (3FR/(4E*))^(1/3), E* = E/(2(1−ν²)).
     let e_star: f64 = 210e9 / (2.0 * (1.0 - 0.09));
     let a = (3.0 * 100.0 * 0.01 / (4.0 * e_star)).cbrt();
-    let a_out: f64 = rows[1][11].parse().unwrap();
+    let a_out: f64 = rows[1][9].parse().unwrap();
     assert!((a_out / a - 1.0).abs() < 1e-13);
     // Row 2 is given by P0 = 1 GPa: the output p0 is that value, load > 0.
-    assert_eq!(rows[2][14].parse::<f64>().unwrap(), 1e9);
-    assert!(rows[2][15].parse::<f64>().unwrap() > 0.0);
+    assert_eq!(rows[2][12].parse::<f64>().unwrap(), 1e9);
+    assert!(rows[2][13].parse::<f64>().unwrap() > 0.0);
+    // Row 1 is given by its load: the computed load is that value.
+    assert_eq!(rows[1][13].parse::<f64>().unwrap(), 100.0);
 }
 
 #[test]
@@ -115,14 +124,15 @@ fn all_columns_and_hamrock_brewe() {
         "elliptic_k",
         "elliptic_e",
     ];
-    assert_eq!(&exact[0][9 + 10..], &extra);
+    // The input's load is carried by the computed load: 8 input columns.
+    assert_eq!(&exact[0][8 + 10..], &extra);
     let v = |rows: &Vec<Vec<String>>, i: usize| -> f64 { rows[1][i].parse().unwrap() };
     // p_mean = (2/3) P0 and area = πab, to round-off.
-    assert!((v(&exact, 19) / (2.0 / 3.0 * v(&exact, 12)) - 1.0).abs() < 1e-15);
-    let area = std::f64::consts::PI * v(&exact, 9) * v(&exact, 10);
-    assert!((v(&exact, 20) / area - 1.0).abs() < 1e-15);
+    assert!((v(&exact, 18) / (2.0 / 3.0 * v(&exact, 11)) - 1.0).abs() < 1e-15);
+    let area = std::f64::consts::PI * v(&exact, 8) * v(&exact, 9);
+    assert!((v(&exact, 19) / area - 1.0).abs() < 1e-15);
     // Hamrock–Brewe differs from exact, within its documented P0 error, 2.3 %.
-    let (pe, ph) = (v(&exact, 12), v(&hb, 12));
+    let (pe, ph) = (v(&exact, 11), v(&hb, 11));
     assert!(pe != ph && (ph / pe - 1.0).abs() < 0.023);
 }
 
@@ -167,11 +177,18 @@ fn malformed_rows_name_row_and_column() {
         e.contains("row 1") && e.contains("nu2") && e.contains("(-1, 0.5)"),
         "{e}"
     );
+    // A radius of 0 is a flat profile, as in the FMU (here flat along x on a
+    // flat body: a line contact); NaN is refused by name.
     let e = fails(
         &["hertz"],
         &format!("{HEADER},p0\n0,0.01,inf,inf,210e9,0.3,210e9,0.3,1e9\n"),
     );
-    assert!(e.contains("rx1") && e.contains("non-zero"), "{e}");
+    assert!(e.contains("along x") && e.contains("line contact"), "{e}");
+    let e = fails(
+        &["hertz"],
+        &format!("{HEADER},p0\nNaN,0.01,inf,inf,210e9,0.3,210e9,0.3,1e9\n"),
+    );
+    assert!(e.contains("rx1") && e.contains("NaN"), "{e}");
     let e = fails(
         &["hertz"],
         &format!("{HEADER},p0\n0.01,0.01,-0.01,inf,210e9,0.3,210e9,0.3,1e9\n"),
@@ -199,11 +216,25 @@ fn missing_columns_are_named() {
     // An empty table (header only) is valid and gives a header-only output.
     let rows = ok(&["hertz"], &format!("{HEADER},load\n"));
     assert_eq!(rows.len(), 1);
-    assert_eq!(rows[0].len(), 9 + 10);
+    assert_eq!(rows[0].len(), 8 + 10);
 }
 
 #[test]
 fn method_must_be_known() {
     let e = fails(&["hertz", "--method", "fast"], &format!("{HEADER},load\n"));
     assert!(e.contains("--method"), "{e}");
+}
+
+#[test]
+fn zero_radius_is_flat_like_infinity() {
+    // The FMU's convention (0 = flat) and the library's (inf = flat) give the
+    // same contact.
+    let with = |flat: &str| {
+        ok(
+            &["hertz"],
+            &format!("{HEADER},load\n0.01,0.01,{flat},{flat},210e9,0.3,210e9,0.3,100\n"),
+        )
+    };
+    let (zero, inf) = (with("0"), with("inf"));
+    assert_eq!(zero[1][8..], inf[1][8..]);
 }

@@ -1,5 +1,5 @@
 //! CLI tests of `traction jt` (batch evaluation of the J+T model).
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
 
 mod common;
 use common::run;

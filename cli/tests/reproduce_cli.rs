@@ -1,5 +1,5 @@
 //! CLI tests of `traction reproduce` and `traction map`.
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
 
 use std::path::PathBuf;
 use std::process::Command;

@@ -64,7 +64,7 @@
 //! `r = C_table(0.1)/C_asym(0.1)`; the correction factor tends to 1 as g → 0, so the
 //! documented limit is reached.
 
-use crate::{ComplianceError, Result};
+use crate::{ComplianceError, Range, Result};
 
 /// Which of Kalker's coefficients.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -242,20 +242,8 @@ fn asymptote(a_gt_b: bool, g: f64, c: Coefficient, nu: f64) -> Option<f64> {
 }
 
 fn check_args(a_over_b: f64, nu: f64) -> Result<()> {
-    if !a_over_b.is_finite() || a_over_b <= 0.0 {
-        return Err(ComplianceError::OutOfRange {
-            quantity: "semi-axis ratio a/b",
-            value: a_over_b,
-            range: "finite and > 0",
-        });
-    }
-    if !nu.is_finite() || !(0.0..=0.5).contains(&nu) {
-        return Err(ComplianceError::OutOfRange {
-            quantity: "Poisson's ratio ν (Kalker table)",
-            value: nu,
-            range: "0 ≤ ν ≤ 0.5 (the table's range; no asymptote in ν)",
-        });
-    }
+    Range::POSITIVE.check("semi-axis ratio a/b", a_over_b)?;
+    crate::KALKER_POISSON_RANGE.check("Poisson's ratio ν (Kalker table)", nu)?;
     Ok(())
 }
 

@@ -64,20 +64,16 @@ pub use kalker::{Coefficient, KalkerCoefficients, kalker_coefficient, kalker_coe
 
 use std::f64::consts::PI;
 
+pub use traction_range::{OutOfRange, Range};
+
 /// Errors of the compliance crate; every variant names the quantity.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum ComplianceError {
-    /// A quantity is NaN, infinite or outside its valid range.
-    #[error("{quantity} = {value} is out of range: {range}")]
-    OutOfRange {
-        /// Name of the quantity.
-        quantity: &'static str,
-        /// The value given.
-        value: f64,
-        /// The valid range, in words.
-        range: &'static str,
-    },
+    /// A quantity is NaN, infinite or outside its valid range (the range and
+    /// its message: [`traction_range::Range`]).
+    #[error(transparent)]
+    OutOfRange(#[from] traction_range::OutOfRange),
     /// A Kalker coefficient was asked for outside the table where no asymptote exists.
     #[error(
         "Kalker coefficient {coefficient} is not available at a/b = {a_over_b}: outside the table (0.1 ≤ a/b ≤ 10) and no asymptote is implemented"
@@ -111,29 +107,8 @@ pub enum ComplianceError {
 /// Result alias of this crate.
 pub type Result<T> = std::result::Result<T, ComplianceError>;
 
-fn positive(quantity: &'static str, value: f64) -> Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(ComplianceError::OutOfRange {
-            quantity,
-            value,
-            range: "finite and > 0",
-        })
-    }
-}
-
-fn finite(quantity: &'static str, value: f64) -> Result<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(ComplianceError::OutOfRange {
-            quantity,
-            value,
-            range: "finite",
-        })
-    }
-}
+/// Poisson's ratios of Kalker's table (no asymptote in ν).
+pub const KALKER_POISSON_RANGE: Range = Range::closed(0.0, 0.5);
 
 /// Direction of the traction force (and of the measured slope).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -162,14 +137,8 @@ impl DiscMaterial {
 
     /// Checked constructor: E > 0, 0 ≤ ν ≤ 0.5 (Kalker's table range).
     pub fn new(youngs_modulus: f64, poisson_ratio: f64) -> Result<Self> {
-        positive("Young's modulus E", youngs_modulus)?;
-        if !poisson_ratio.is_finite() || !(0.0..=0.5).contains(&poisson_ratio) {
-            return Err(ComplianceError::OutOfRange {
-                quantity: "Poisson's ratio ν",
-                value: poisson_ratio,
-                range: "0 ≤ ν ≤ 0.5",
-            });
-        }
+        Range::POSITIVE.check("Young's modulus E", youngs_modulus)?;
+        KALKER_POISSON_RANGE.check("Poisson's ratio ν", poisson_ratio)?;
         Ok(Self {
             youngs_modulus,
             poisson_ratio,
@@ -186,7 +155,7 @@ impl DiscMaterial {
 /// Kalker's compliance constant q of (A1) for aspect ratio `k = b/a` and ν:
 /// `q_x = π/C11(a/b = 1/k, ν)` (longitudinal), `q_y = π/C22` (side).
 pub fn kalker_q(direction: Direction, k: f64, nu: f64) -> Result<f64> {
-    positive("aspect ratio k", k)?;
+    Range::POSITIVE.check("aspect ratio k", k)?;
     let c = match direction {
         Direction::Longitudinal => Coefficient::C11,
         Direction::Side => Coefficient::C22,
@@ -196,22 +165,22 @@ pub fn kalker_q(direction: Direction, k: f64, nu: f64) -> Result<f64> {
 
 /// (A1) dry creep `q·F/(π a b G_s)` of the discs under traction force `force` (N).
 pub fn dry_creep(q: f64, force: f64, a: f64, b: f64, shear_modulus: f64) -> Result<f64> {
-    positive("Kalker constant q", q)?;
-    finite("traction force F", force)?;
-    positive("semi-axis a", a)?;
-    positive("semi-axis b", b)?;
-    positive("disc shear modulus G_s", shear_modulus)?;
+    Range::POSITIVE.check("Kalker constant q", q)?;
+    Range::FINITE.check("traction force F", force)?;
+    Range::POSITIVE.check("semi-axis a", a)?;
+    Range::POSITIVE.check("semi-axis b", b)?;
+    Range::POSITIVE.check("disc shear modulus G_s", shear_modulus)?;
     Ok(q * force / (PI * a * b * shear_modulus))
 }
 
 /// (A2) creep of an elastic film of thickness `h` and mean modulus `g_bar`:
 /// `(32/(9π))(h/a)·F/(π a b Ḡ)`.
 pub fn film_creep(h: f64, force: f64, a: f64, b: f64, g_bar: f64) -> Result<f64> {
-    positive("film thickness h", h)?;
-    finite("traction force F", force)?;
-    positive("semi-axis a", a)?;
-    positive("semi-axis b", b)?;
-    positive("fluid shear modulus Ḡ", g_bar)?;
+    Range::POSITIVE.check("film thickness h", h)?;
+    Range::FINITE.check("traction force F", force)?;
+    Range::POSITIVE.check("semi-axis a", a)?;
+    Range::POSITIVE.check("semi-axis b", b)?;
+    Range::POSITIVE.check("fluid shear modulus Ḡ", g_bar)?;
     Ok(32.0 / (9.0 * PI) * (h / a) * force / (PI * a * b * g_bar))
 }
 
@@ -230,9 +199,9 @@ pub fn total_creep(
 
 /// (B1) compliance-corrected modulus `G_c = Ḡ (1 − m/m')⁻¹`; requires `m < m'`.
 pub fn compliance_corrected_modulus(g_bar: f64, m: f64, m_dry: f64) -> Result<f64> {
-    positive("apparent modulus Ḡ", g_bar)?;
-    positive("wet slope m", m)?;
-    positive("dry slope m'", m_dry)?;
+    Range::POSITIVE.check("apparent modulus Ḡ", g_bar)?;
+    Range::POSITIVE.check("wet slope m", m)?;
+    Range::POSITIVE.check("dry slope m'", m_dry)?;
     if m >= m_dry {
         return Err(ComplianceError::SlopeNotBelowDry { m, m_dry });
     }
@@ -241,28 +210,28 @@ pub fn compliance_corrected_modulus(g_bar: f64, m: f64, m_dry: f64) -> Result<f6
 
 /// (B2) dry slope `m' = π a b G_s/(q N)` for normal load `n` (N).
 pub fn dry_slope_from_load(a: f64, b: f64, shear_modulus: f64, q: f64, n: f64) -> Result<f64> {
-    positive("semi-axis a", a)?;
-    positive("semi-axis b", b)?;
-    positive("disc shear modulus G_s", shear_modulus)?;
-    positive("Kalker constant q", q)?;
-    positive("normal load N", n)?;
+    Range::POSITIVE.check("semi-axis a", a)?;
+    Range::POSITIVE.check("semi-axis b", b)?;
+    Range::POSITIVE.check("disc shear modulus G_s", shear_modulus)?;
+    Range::POSITIVE.check("Kalker constant q", q)?;
+    Range::POSITIVE.check("normal load N", n)?;
     Ok(PI * a * b * shear_modulus / (q * n))
 }
 
 /// (B3) dry slope `m' = 3 G_s/(2 q P0)`.
 pub fn dry_slope(shear_modulus: f64, q: f64, p0: f64) -> Result<f64> {
-    positive("disc shear modulus G_s", shear_modulus)?;
-    positive("Kalker constant q", q)?;
-    positive("Hertz pressure P0", p0)?;
+    Range::POSITIVE.check("disc shear modulus G_s", shear_modulus)?;
+    Range::POSITIVE.check("Kalker constant q", q)?;
+    Range::POSITIVE.check("Hertz pressure P0", p0)?;
     Ok(1.5 * shear_modulus / (q * p0))
 }
 
 /// (B4) apparent fluid modulus `Ḡ = (π/4) m P0 h/a` (Pa).
 pub fn apparent_modulus(m: f64, p0: f64, h: f64, a: f64) -> Result<f64> {
-    positive("traction slope m", m)?;
-    positive("Hertz pressure P0", p0)?;
-    positive("film thickness h", h)?;
-    positive("semi-axis a", a)?;
+    Range::POSITIVE.check("traction slope m", m)?;
+    Range::POSITIVE.check("Hertz pressure P0", p0)?;
+    Range::POSITIVE.check("film thickness h", h)?;
+    Range::POSITIVE.check("semi-axis a", a)?;
     Ok(PI / 4.0 * m * p0 * h / a)
 }
 
@@ -290,15 +259,15 @@ pub fn convert_slope(
     p0: f64,
     g_s: f64,
 ) -> Result<f64> {
-    positive("measured slope m", measured.slope)?;
-    positive("measured Kalker constant q", measured.q)?;
-    positive("measured semi-axis a", measured.a)?;
-    positive("measured film thickness h", measured.h)?;
-    positive("target Kalker constant q*", target.q)?;
-    positive("target semi-axis a*", target.a)?;
-    positive("target film thickness h*", target.h)?;
-    positive("Hertz pressure P0", p0)?;
-    positive("disc shear modulus G_s", g_s)?;
+    Range::POSITIVE.check("measured slope m", measured.slope)?;
+    Range::POSITIVE.check("measured Kalker constant q", measured.q)?;
+    Range::POSITIVE.check("measured semi-axis a", measured.a)?;
+    Range::POSITIVE.check("measured film thickness h", measured.h)?;
+    Range::POSITIVE.check("target Kalker constant q*", target.q)?;
+    Range::POSITIVE.check("target semi-axis a*", target.a)?;
+    Range::POSITIVE.check("target film thickness h*", target.h)?;
+    Range::POSITIVE.check("Hertz pressure P0", p0)?;
+    Range::POSITIVE.check("disc shear modulus G_s", g_s)?;
     let (m, q, a, h) = (measured.slope, measured.q, measured.a, measured.h);
     let (qs, as_, hs) = (target.q, target.a, target.h);
     let bracket = 1.0 + 2.0 / 3.0 * (m * q * p0 / g_s) * (as_ * h * qs / (a * q * hs) - 1.0);

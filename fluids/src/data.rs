@@ -204,7 +204,7 @@ fn split(line: &str) -> Vec<String> {
 }
 
 /// Data lines (skips `#` comments and the header) with their 1-based line numbers.
-fn rows(text: &str) -> impl Iterator<Item = (usize, Vec<String>)> + '_ {
+pub(crate) fn rows(text: &str) -> impl Iterator<Item = (usize, Vec<String>)> + '_ {
     text.lines()
         .enumerate()
         .filter(|(_, l)| !l.starts_with('#') && !l.trim().is_empty())
@@ -212,7 +212,7 @@ fn rows(text: &str) -> impl Iterator<Item = (usize, Vec<String>)> + '_ {
         .map(|(i, l)| (i + 1, split(l)))
 }
 
-fn num(file: &'static str, line: usize, s: &str) -> Result<f64, FluidError> {
+pub(crate) fn num(file: &'static str, line: usize, s: &str) -> Result<f64, FluidError> {
     s.trim().parse::<f64>().map_err(|_| FluidError::Data {
         file,
         line,
@@ -224,7 +224,12 @@ fn opt_usize(s: &str) -> Option<usize> {
     s.trim().parse().ok()
 }
 
-fn need(file: &'static str, line: usize, f: &[String], n: usize) -> Result<(), FluidError> {
+pub(crate) fn need(
+    file: &'static str,
+    line: usize,
+    f: &[String],
+    n: usize,
+) -> Result<(), FluidError> {
     if f.len() < n {
         return Err(FluidError::Data {
             file,
@@ -551,6 +556,54 @@ pub fn main_text_tables() -> Result<Vec<MainTableRow>, FluidError> {
                 fluid: f[1].clone(),
                 trace: f[2].clone(),
                 values,
+            })
+        })
+        .collect()
+}
+
+/// One row of Table 4-3 with its source row of Table 4-2 (Santotrac 50, 70 °C,
+/// 20 m/s, no spin): the side-slip slope measured and the longitudinal slope
+/// the report derived from it for disc compliance (Appendix IV).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SlopeCorrection {
+    /// Aspect ratio k.
+    pub k: f64,
+    /// Hertz pressure P0, GPa.
+    pub p0_gpa: f64,
+    /// Side-slip traction slope m of Table 4-2.
+    pub m_side: f64,
+    /// Peak traction coefficient μ of Tables 4-2 and 4-3.
+    pub mu: f64,
+    /// Longitudinal slope m* of Table 4-3, as printed.
+    pub m_star: f64,
+}
+
+/// Table 4-3 joined with Table 4-2 by k (from `main_text_tables.csv`).
+pub fn table_4_3() -> Result<Vec<SlopeCorrection>, FluidError> {
+    let all = main_text_tables()?;
+    let of = |t: &'static str| all.iter().filter(move |r| r.table == t);
+    // Columns of MainTableRow::values: p0_gpa = 1, k = 3, m = 6, mu = 7.
+    let missing = |what: &str| FluidError::Data {
+        file: "main_text_tables.csv",
+        line: 0,
+        message: format!("Table 4-3: {what}"),
+    };
+    of("4-3")
+        .map(|r| {
+            let (k, p0, m_star, mu) = match (r.values[3], r.values[1], r.values[6], r.values[7]) {
+                (Some(k), Some(p0), Some(m), Some(mu)) => (k, p0, m, mu),
+                _ => return Err(missing("a row lacks k, P0, m or mu")),
+            };
+            let m_side = of("4-2")
+                .find(|s| s.values[3] == Some(k))
+                .and_then(|s| s.values[6])
+                .ok_or_else(|| missing(&format!("no Table 4-2 row at k = {k}")))?;
+            Ok(SlopeCorrection {
+                k,
+                p0_gpa: p0,
+                m_side,
+                mu,
+                m_star,
             })
         })
         .collect()

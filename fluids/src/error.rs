@@ -28,14 +28,10 @@ pub enum FluidError {
         /// Which correlation (e.g. "Santotrac 50 μ, App. III-C").
         correlation: String,
     },
-    /// A query variable is NaN or infinite.
-    #[error("{quantity} must be a finite number, got {value}")]
-    NotFinite {
-        /// Name of the variable with its unit.
-        quantity: &'static str,
-        /// The value received.
-        value: f64,
-    },
+    /// A query variable is NaN or infinite (the range and its message:
+    /// [`traction_range::Range`]).
+    #[error(transparent)]
+    Range(#[from] traction_range::OutOfRange),
     /// The correlation returned a non-positive slope or traction coefficient
     /// (possible far outside the data).
     #[error("{correlation} gives a non-physical value {value} at this point (must be > 0)")]

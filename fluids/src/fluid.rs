@@ -259,9 +259,7 @@ impl FluidCorrelation {
             ("spin parameter Z", q.z),
         ];
         for (quantity, value) in vals {
-            if !value.is_finite() {
-                return Err(FluidError::NotFinite { quantity, value });
-            }
+            traction_range::Range::FINITE.check(quantity, value)?;
         }
         let outside = self.envelope.outside(q);
         if let (Policy::Strict, Some(&(quantity, value, min, max))) = (policy, outside.first()) {
@@ -470,7 +468,7 @@ mod tests {
             &q(f64::NAN, 20.0, 70.0, 1.0, 0.0),
             Policy::Extrapolate,
         );
-        assert!(matches!(nan, Err(FluidError::NotFinite { .. })));
+        assert!(matches!(nan, Err(FluidError::Range(_))));
         // Spin μ needs Z in range; the zero-spin correlations have Z = 0 only.
         let z = f.evaluate(
             Quantity::Mu,

@@ -20,10 +20,14 @@
 //!   per-point columns — [`listing`].
 //! * `appendix_i_traces.csv` (8 reduced traces, [`appendix_i_traces`]),
 //!   `appendix_vii_e_combined.csv` (33 combined-slip tests, [`appendix_vii_e`]),
-//!   `main_text_tables.csv` (Tables 2-6, 4-1, 4-2, 4-3, [`main_text_tables`]).
 //! * `thermal_properties.csv`: inlet viscosity, pressure–viscosity
 //!   coefficient, conductivity and temperature coefficients of μ and m for
 //!   the thermal contact model, with sources — [`ThermalProperties`].
+//!   `main_text_tables.csv` (Tables 2-6, 4-1, 4-2, 4-3, [`main_text_tables`];
+//!   Table 4-3 with its Table 4-2 source, [`table_4_3`]).
+//! * `machines.csv`, `shape_factors.csv`, `load_tests.csv`: the twin-disc
+//!   machines of Table 2-1 with Table 2-2's C ([`machines`]), Table 2-2's A, B
+//!   ([`shape_factor_table`]) and Table 2-3's load tests ([`load_tests`]).
 //!
 //! ## Assumptions
 //! * Z for each test is C''·P0 with the C'' the report's III-E regression used
@@ -65,16 +69,21 @@
 mod data;
 mod error;
 mod fluid;
+mod machines;
 mod thermal;
 
 pub use data::{
-    CombinedSlipPoint, Correction, FluidName, ListingRow, MainTableRow, PrintedResult, SpinFactor,
-    TestRecord, TracePoint, appendix_i_traces, appendix_vii_e, corrections, listing,
-    main_text_tables, printed_result, spin_factor, spin_factors, tests,
+    CombinedSlipPoint, Correction, FluidName, ListingRow, MainTableRow, PrintedResult,
+    SlopeCorrection, SpinFactor, TestRecord, TracePoint, appendix_i_traces, appendix_vii_e,
+    corrections, listing, main_text_tables, printed_result, spin_factor, spin_factors, table_4_3,
+    tests,
 };
 pub use error::FluidError;
 pub use fluid::{
     Envelope, Estimate, Fluid, FluidCorrelation, Policy, Quantity, Query, Source, data_set,
+};
+pub use machines::{
+    LoadTest, Machine, Printed, ShapeFactorRow, load_tests, machine, machines, shape_factor_table,
 };
 pub use thermal::ThermalProperties;
 pub use traction_regression::{RegressionError, TemperatureForm};

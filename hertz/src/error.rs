@@ -6,14 +6,17 @@
 #[non_exhaustive]
 pub enum HertzError {
     /// An input quantity is NaN, infinite where it must be finite, or outside
-    /// its valid range.
+    /// its valid range (the range and its message: [`traction_range::Range`]).
+    #[error(transparent)]
+    OutOfRange(#[from] traction_range::OutOfRange),
+    /// A radius of curvature is zero or NaN (convex > 0, concave < 0, flat = inf).
     #[error("{quantity} = {value} is out of range: must be {valid}")]
     InvalidInput {
         /// Which quantity (e.g. `rx1 (radius of body 1 along x, m)`).
         quantity: &'static str,
         /// The value given.
         value: f64,
-        /// The valid range, in words.
+        /// The valid values, in words.
         valid: &'static str,
     },
     /// The relative curvature in one principal direction is not positive: the

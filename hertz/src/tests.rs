@@ -113,7 +113,7 @@ fn load_equals_two_thirds_pi_a_b_p0() {
 #[test]
 fn root_solve_reaches_1e_12() {
     // k → Cx/Cy → k over the whole supported range (log-spaced, both sides
-    // of 1): the issue asks for 1e-12 relative.
+    // of 1) to K_TOLERANCE = 1e-12 relative.
     for i in 0..=600 {
         let k = (K_MIN.ln() + (K_MAX.ln() - K_MIN.ln()) * f64::from(i) / 600.0).exp();
         let rho = curvature_ratio(k).unwrap();

@@ -17,7 +17,7 @@ fn convex_or_flat() -> impl Strategy<Value = f64> {
 
 /// A random valid pair: body 1 convex in both directions, body 2 convex,
 /// flat or concave with a radius larger than body 1's (positive relative
-/// curvature), and the resulting k within the 0.05 ..= 20.
+/// curvature), and the resulting k within the tested 0.05 ..= 20.
 fn pair() -> impl Strategy<Value = (Body, Body)> {
     (
         1e-3..1.0_f64,

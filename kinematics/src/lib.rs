@@ -80,21 +80,20 @@
 pub use nalgebra::Vector3;
 
 mod toroidal;
-pub use toroidal::{HalfToroidalVariator, VariatorState};
+pub use toroidal::{HALF_CONE_ANGLE_RANGE, HalfToroidalVariator, VariatorState};
+pub use traction_range::{OutOfRange, Range};
+
+use std::f64::consts::FRAC_PI_2;
 
 /// Errors of the kinematics crate. Every variant names the offending quantity.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum KinematicsError {
-    /// A quantity is NaN or infinite.
-    #[error("{quantity} must be finite, got {value}")]
-    NotFinite {
-        /// Name of the quantity.
-        quantity: &'static str,
-        /// The value given.
-        value: f64,
-    },
-    /// A quantity lies outside its valid range.
+    /// An input quantity is NaN, infinite, or outside its valid range (the
+    /// range and its message: [`traction_range::Range`]).
+    #[error(transparent)]
+    Range(#[from] traction_range::OutOfRange),
+    /// A quantity derived from the inputs lies outside its valid range.
     #[error("{quantity} = {value} is out of range: {range}")]
     OutOfRange {
         /// Name of the quantity.
@@ -142,30 +141,12 @@ pub enum KinematicsError {
 /// Result alias of this crate.
 pub type Result<T> = std::result::Result<T, KinematicsError>;
 
-pub(crate) fn finite(quantity: &'static str, value: f64) -> Result<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(KinematicsError::NotFinite { quantity, value })
-    }
-}
-
-pub(crate) fn positive(quantity: &'static str, value: f64) -> Result<f64> {
-    finite(quantity, value)?;
-    if value > 0.0 {
-        Ok(value)
-    } else {
-        Err(KinematicsError::OutOfRange {
-            quantity,
-            value,
-            range: "must be > 0",
-        })
-    }
-}
+/// Valid skew angle β and tilt angle α: |angle| < π/2.
+pub const ANGLE_RANGE: Range = Range::open(-FRAC_PI_2, FRAC_PI_2).with_unit("rad");
 
 fn finite_vec(quantity: &'static str, v: &Vector3<f64>) -> Result<()> {
     for c in v.iter() {
-        finite(quantity, *c)?;
+        Range::FINITE.check(quantity, *c)?;
     }
     Ok(())
 }
@@ -176,14 +157,7 @@ fn finite_vec(quantity: &'static str, v: &Vector3<f64>) -> Result<()> {
 ///
 /// Valid for `|β| < π/2`.
 pub fn side_slip_ratio(skew_angle: f64) -> Result<f64> {
-    finite("skew angle β", skew_angle)?;
-    if skew_angle.abs() >= std::f64::consts::FRAC_PI_2 {
-        return Err(KinematicsError::OutOfRange {
-            quantity: "skew angle β",
-            value: skew_angle,
-            range: "|β| < π/2 rad",
-        });
-    }
+    ANGLE_RANGE.check("skew angle β", skew_angle)?;
     Ok(skew_angle.tan())
 }
 
@@ -194,16 +168,9 @@ pub fn side_slip_ratio(skew_angle: f64) -> Result<f64> {
 /// negative when the centre of R_y lies above the axis of rotation, figure 2-3a),
 /// `alpha` the tilt angle (|α| < π/2). Errors if the radius is not positive.
 pub fn tilted_disc_rolling_radius(alpha: f64, ry: f64, e: f64) -> Result<f64> {
-    finite("tilt angle α", alpha)?;
-    positive("transverse radius R_y", ry)?;
-    finite("centre offset e", e)?;
-    if alpha.abs() >= std::f64::consts::FRAC_PI_2 {
-        return Err(KinematicsError::OutOfRange {
-            quantity: "tilt angle α",
-            value: alpha,
-            range: "|α| < π/2 rad",
-        });
-    }
+    ANGLE_RANGE.check("tilt angle α", alpha)?;
+    Range::POSITIVE.check("transverse radius R_y", ry)?;
+    Range::FINITE.check("centre offset e", e)?;
     let radius = ry * alpha.cos() + e;
     if radius > 0.0 {
         Ok(radius)
@@ -230,9 +197,9 @@ pub fn tilted_disc_spin_per_speed(alpha: f64, ry: f64, e: f64) -> Result<f64> {
 /// `omega_per_u` is ω/U (1/m), `c` the contact-size factor `C = a/P0` of
 /// equation (2) (m/Pa, > 0), `k = b/a` (> 0).
 pub fn spin_factor(omega_per_u: f64, c: f64, k: f64) -> Result<f64> {
-    finite("spin per rolling speed ω/U", omega_per_u)?;
-    positive("contact-size factor C", c)?;
-    positive("aspect ratio k", k)?;
+    Range::FINITE.check("spin per rolling speed ω/U", omega_per_u)?;
+    Range::POSITIVE.check("contact-size factor C", c)?;
+    Range::POSITIVE.check("aspect ratio k", k)?;
     Ok(omega_per_u * c * k.sqrt())
 }
 
@@ -240,26 +207,26 @@ pub fn spin_factor(omega_per_u: f64, c: f64, k: f64) -> Result<f64> {
 ///
 /// `c_double_prime` in 1/Pa, `p0` the maximum Hertz pressure (Pa, > 0).
 pub fn spin_group(c_double_prime: f64, p0: f64) -> Result<f64> {
-    finite("spin factor C''", c_double_prime)?;
-    positive("Hertz pressure P0", p0)?;
+    Range::FINITE.check("spin factor C''", c_double_prime)?;
+    Range::POSITIVE.check("Hertz pressure P0", p0)?;
     Ok(c_double_prime * p0)
 }
 
 /// Spin grouping `Z = ω√(ab)/U` from ω/U (1/m) and the semi-axes a, b (m).
 pub fn spin_group_from_contact(omega_per_u: f64, a: f64, b: f64) -> Result<f64> {
-    finite("spin per rolling speed ω/U", omega_per_u)?;
-    positive("semi-axis a", a)?;
-    positive("semi-axis b", b)?;
+    Range::FINITE.check("spin per rolling speed ω/U", omega_per_u)?;
+    Range::POSITIVE.check("semi-axis a", a)?;
+    Range::POSITIVE.check("semi-axis b", b)?;
     Ok(omega_per_u * (a * b).sqrt())
 }
 
 // ---------------------------------------------------------------- J groups
 
 fn j_group(m: f64, mu: f64, k: f64, name: &'static str, ratio: f64) -> Result<f64> {
-    positive("traction slope m", m)?;
-    positive("peak traction coefficient μ", mu)?;
-    positive("aspect ratio k", k)?;
-    finite(name, ratio)?;
+    Range::POSITIVE.check("traction slope m", m)?;
+    Range::POSITIVE.check("peak traction coefficient μ", mu)?;
+    Range::POSITIVE.check("aspect ratio k", k)?;
+    Range::FINITE.check(name, ratio)?;
     Ok(3.0 * std::f64::consts::PI / 8.0 * (m / mu) * ratio * k.sqrt())
 }
 
@@ -440,8 +407,8 @@ impl ContactKinematics {
     /// Speed-pole location `ε = ΔU/(ω√(ab))` (dimensionless; the J1/J3 of the
     /// report). Errors when the spin is zero.
     pub fn speed_pole(&self, a: f64, b: f64) -> Result<f64> {
-        positive("semi-axis a", a)?;
-        positive("semi-axis b", b)?;
+        Range::POSITIVE.check("semi-axis a", a)?;
+        Range::POSITIVE.check("semi-axis b", b)?;
         if self.spin == 0.0 {
             return Err(KinematicsError::ZeroSpin);
         }

@@ -25,9 +25,12 @@
 
 use nalgebra::Vector3;
 
-use crate::{
-    BodyMotion, ContactKinematics, KinematicsError, Result, contact_kinematics, finite, positive,
-};
+use crate::{BodyMotion, ContactKinematics, KinematicsError, Range, Result, contact_kinematics};
+
+/// Valid half-cone angle θ0 of the variator: (0, π/2] rad.
+pub const HALF_CONE_ANGLE_RANGE: Range = Range::open(0.0, std::f64::consts::FRAC_PI_2)
+    .closed_above()
+    .with_unit("rad");
 
 /// Half-toroidal variator geometry (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -72,16 +75,9 @@ impl HalfToroidalVariator {
         cavity_centre_radius: f64,
         half_cone_angle: f64,
     ) -> Result<Self> {
-        positive("cavity radius r0", cavity_radius)?;
-        positive("cavity centre radius e0", cavity_centre_radius)?;
-        positive("half-cone angle θ0", half_cone_angle)?;
-        if half_cone_angle > std::f64::consts::FRAC_PI_2 {
-            return Err(KinematicsError::OutOfRange {
-                quantity: "half-cone angle θ0",
-                value: half_cone_angle,
-                range: "0 < θ0 ≤ π/2 rad",
-            });
-        }
+        Range::POSITIVE.check("cavity radius r0", cavity_radius)?;
+        Range::POSITIVE.check("cavity centre radius e0", cavity_centre_radius)?;
+        HALF_CONE_ANGLE_RANGE.check("half-cone angle θ0", half_cone_angle)?;
         Ok(Self {
             cavity_radius,
             cavity_centre_radius,
@@ -99,8 +95,8 @@ impl HalfToroidalVariator {
             self.cavity_centre_radius,
             self.half_cone_angle,
         )?;
-        finite("tilt angle γ", tilt)?;
-        finite("input speed ω_in", input_speed)?;
+        Range::FINITE.check("tilt angle γ", tilt)?;
+        Range::FINITE.check("input speed ω_in", input_speed)?;
         let (r0, e0, th) = (v.cavity_radius, v.cavity_centre_radius, v.half_cone_angle);
         let centre = Vector3::new(0.0, e0, 0.0);
         let d = Vector3::new(tilt.sin(), -tilt.cos(), 0.0);

@@ -1,6 +1,15 @@
 //! Variables, normalisation (eq. 12) and the design rows of eq. 14 and eq. 15.
 
+use traction_range::Range;
+
 use crate::RegressionError;
+
+/// Valid rolling speed U of a correlation variable.
+pub const SPEED_RANGE: Range = Range::POSITIVE.with_unit("m/s");
+/// Valid Hertz pressure P0 of a correlation variable (the report's unit).
+pub const P0_GPA_RANGE: Range = Range::POSITIVE.with_unit("GPa");
+/// Valid inlet temperature θ: above absolute zero.
+pub const TEMPERATURE_RANGE: Range = Range::greater_than(-273.15).with_unit("°C");
 
 /// One operating point in the report's correlation variables.
 ///
@@ -28,39 +37,19 @@ impl Variables {
     /// Checks that every variable is finite and in its physical range
     /// (U > 0, P0 > 0, θ > −273.15 °C, k > 0, Z ≥ 0).
     pub fn validate(&self) -> Result<(), RegressionError> {
-        let checks: [(&'static str, f64, bool, &'static str); 5] = [
-            (
-                "rolling speed U (m/s)",
-                self.speed,
-                self.speed > 0.0,
-                "U > 0 m/s",
-            ),
-            (
-                "Hertz pressure P0 (GPa)",
-                self.p0_gpa,
-                self.p0_gpa > 0.0,
-                "P0 > 0 GPa",
-            ),
+        let checks: [(&'static str, f64, Range); 5] = [
+            ("rolling speed U (m/s)", self.speed, SPEED_RANGE),
+            ("Hertz pressure P0 (GPa)", self.p0_gpa, P0_GPA_RANGE),
             (
                 "inlet temperature θ (°C)",
                 self.theta_celsius,
-                self.theta_celsius > -273.15,
-                "θ > −273.15 °C",
+                TEMPERATURE_RANGE,
             ),
-            ("aspect ratio k", self.k, self.k > 0.0, "k > 0"),
-            ("spin parameter Z", self.z, self.z >= 0.0, "Z ≥ 0"),
+            ("aspect ratio k", self.k, Range::POSITIVE),
+            ("spin parameter Z", self.z, Range::NON_NEGATIVE),
         ];
-        for (quantity, value, ok, range) in checks {
-            if !value.is_finite() {
-                return Err(RegressionError::NotFinite { quantity, value });
-            }
-            if !ok {
-                return Err(RegressionError::OutOfRange {
-                    quantity,
-                    value,
-                    range,
-                });
-            }
+        for (quantity, value, range) in checks {
+            range.check(quantity, value)?;
         }
         Ok(())
     }

@@ -5,6 +5,10 @@
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum RegressionError {
+    /// An input variable is NaN, infinite or outside its valid range (the range
+    /// and its message: [`traction_range::Range`]).
+    #[error(transparent)]
+    Range(#[from] traction_range::OutOfRange),
     /// A variable is NaN or infinite.
     #[error("{quantity} must be a finite number, got {value}")]
     NotFinite {

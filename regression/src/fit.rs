@@ -181,16 +181,7 @@ fn check_means(model: &Model, means: &Variables) -> Result<(), RegressionError> 
         ("mean aspect ratio k̄", means.k),
     ];
     for (quantity, value) in positive {
-        if !value.is_finite() {
-            return Err(RegressionError::NotFinite { quantity, value });
-        }
-        if value <= 0.0 {
-            return Err(RegressionError::OutOfRange {
-                quantity,
-                value,
-                range: "> 0",
-            });
-        }
+        traction_range::Range::POSITIVE.check(quantity, value)?;
     }
     if !means.theta_celsius.is_finite() || means.theta_celsius == 0.0 {
         return Err(RegressionError::OutOfRange {

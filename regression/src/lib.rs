@@ -78,8 +78,12 @@ mod error;
 mod fit;
 pub mod nls;
 
-pub use design::{Model, Normalised, TemperatureForm, TermSet, Variables};
+pub use design::{
+    Model, Normalised, P0_GPA_RANGE, SPEED_RANGE, TEMPERATURE_RANGE, TemperatureForm, TermSet,
+    Variables,
+};
 pub use error::RegressionError;
 pub use fit::{
     Correlation, ErrorStats, Fit, LeaveOneOut, MAX_CONDITION, fit, leave_one_out, percent_error,
 };
+pub use traction_range::{OutOfRange, Range};

@@ -42,11 +42,18 @@ pub enum ReproduceError {
     /// A data file is malformed (names the file, row and column).
     #[error("data: {0}")]
     Data(String),
-    /// A model crate rejected an input (names the table and the value).
-    #[error("model: {0}")]
-    Model(String),
-    /// Writing an output failed.
-    #[error("{context}: {source}")]
+    /// A model crate rejected an input (names the table and the value); the
+    /// model's own error is the [`source`](std::error::Error::source).
+    #[error("model: {context}")]
+    Model {
+        /// The table and computation (e.g. `Table 2-3 load`).
+        context: String,
+        /// The model crate's error.
+        #[source]
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
+    /// Writing an output failed (the I/O error is the source).
+    #[error("{context}")]
     Io {
         /// What was being written.
         context: String,
@@ -248,7 +255,9 @@ pub struct Summary {
     pub missing: Vec<String>,
 }
 
-fn max_rms(v: &[f64]) -> (f64, f64) {
+/// Maximum |deviation| and root-mean-square of a set of deviations (NaN, NaN
+/// when there are none).
+pub fn max_rms(v: &[f64]) -> (f64, f64) {
     if v.is_empty() {
         return (f64::NAN, f64::NAN);
     }

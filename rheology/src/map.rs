@@ -30,7 +30,7 @@
 //!   refinement confines them to thin layers of cells.
 //! * **Accuracy** (measured, not proven: the check samples one point per
 //!   cell). Random points, |x| log-uniform in [0.1, 10⁴], random direction,
-//!   against [`crate::evaluate`] at tol/100 (example `map_check`):
+//!   against [`crate::evaluate`] at tol/100 (`cargo xtask map-check`):
 //!   tol = 1e-3, k = 0.1, 1, 5, 20, 1000 points each: worst error 0.47·tol,
 //!   none evaluated directly; tol = 1e-4, 600 points each: worst 0.53·tol,
 //!   0.2 % evaluated directly; further k = 0.05, 0.3, 2, 10, 50: ≤ 0.39·tol

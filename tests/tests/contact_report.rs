@@ -14,88 +14,47 @@ use std::f64::consts::PI;
 use traction_contact::{
     Body, Compliance, Direction, DiscMaterial, Fluid, OperatingState, Options, TractionContact,
 };
+use traction_fluids::{machines, table_4_3};
+use traction_tests::data::{APPENDIX_VI, APPENDIX_VII_A, APPENDIX_VII_B};
+use traction_tests::{Csv, max_rms};
 
-const VI: &str = include_str!("../../fluids/data/appendix_vi_spin_traces.csv");
-const VIIA: &str = include_str!("../../fluids/data/appendix_vii_a_side_slip.csv");
-const VIIB: &str = include_str!("../../fluids/data/appendix_vii_b_combined_slip.csv");
-
-/// A `#`-commented CSV as (header, rows of strings).
-struct Csv {
-    header: Vec<String>,
-    rows: Vec<Vec<String>>,
+/// The disc pair of Table 2-1 (`fluids/data/machines.csv`, with its OCR
+/// corrections) of machine `prefix` (`LS` low speed, `HS` high speed) at k.
+fn disc_pair(prefix: &str, k: f64) -> (Body, Body) {
+    let m = machines()
+        .expect("Table 2-1 data")
+        .into_iter()
+        .find(|m| m.name.starts_with(prefix) && m.k == k)
+        .unwrap_or_else(|| panic!("no {prefix} disc pair for k = {k}"));
+    (
+        Body::steel(m.rx1_mm * 1e-3, m.ry1_mm * 1e-3),
+        Body::steel(m.rx2_mm * 1e-3, f64::INFINITY),
+    )
 }
 
-impl Csv {
-    fn parse(text: &str) -> Csv {
-        let mut lines = text
-            .lines()
-            .filter(|l| !l.starts_with('#') && !l.trim().is_empty());
-        let split = |l: &str| {
-            l.split(',')
-                .map(|s| s.trim().to_string())
-                .collect::<Vec<_>>()
-        };
-        let header = split(lines.next().expect("header"));
-        let rows = lines.map(split).collect();
-        Csv { header, rows }
-    }
-    fn idx(&self, name: &str) -> usize {
-        self.header
-            .iter()
-            .position(|c| c == name)
-            .unwrap_or_else(|| panic!("column {name}"))
-    }
-    fn f(&self, row: &[String], name: &str) -> f64 {
-        row[self.idx(name)]
-            .parse()
-            .unwrap_or_else(|_| panic!("number in {name}"))
-    }
-    fn s<'a>(&self, row: &'a [String], name: &str) -> &'a str {
-        &row[self.idx(name)]
-    }
-}
-
-fn max_rms(v: &[f64]) -> (f64, f64) {
-    let max = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
-    let rms = (v.iter().map(|x| x * x).sum::<f64>() / v.len().max(1) as f64).sqrt();
-    (max, rms)
-}
-
-/// Low-speed machine discs of Table 2-1 (mm): upper Rx 25, Ry by k (the k = 5
-/// Ry is blank in the OCR of Table 2-1; Table 2-4's 150.4 mm), lower Rx 25, flat.
+/// Low-speed machine discs of Table 2-1.
 fn low_speed(k: f64) -> (Body, Body) {
-    let ry = match k {
-        0.5 => 4.3e-3,
-        1.0 => 12.5e-3,
-        2.0 => 36.5e-3,
-        5.0 => 150.4e-3,
-        _ => panic!("no low-speed disc for k = {k}"),
-    };
-    (Body::steel(25e-3, ry), Body::steel(25e-3, f64::INFINITY))
+    disc_pair("LS", k)
 }
 
-/// High-speed machine discs of Table 2-1: upper Rx 33 mm, Ry 22.6 (k = 1) or
-/// 270 mm (k = 5); lower Rx 71.4 mm, flat. (Table 2-4 prints 20.6 mm for the
-/// k = 1 toroid; 22.6 mm is consistent with Table 2-1's Re and Table 2-5's C'',
-/// see tests/tests/kinematics_tables.rs.)
+/// High-speed machine discs of Table 2-1.
 fn high_speed(k: f64) -> (Body, Body) {
-    let ry = if k == 1.0 { 22.6e-3 } else { 270e-3 };
-    (Body::steel(33e-3, ry), Body::steel(71.4e-3, f64::INFINITY))
+    disc_pair("HS", k)
 }
 
 fn build(bodies: (Body, Body), fluid: Fluid, options: Options) -> TractionContact {
     TractionContact::new(&bodies.0, &bodies.1, fluid, options).expect("contact")
 }
 
-/// Table 4-2 / 4-3 pressure (GPa) by aspect ratio (U = 20 m/s, θ = 70 °C).
+/// Table 4-2 / 4-3 pressure (Pa) by aspect ratio (U = 20 m/s, θ = 70 °C).
 fn table_4_2_p0(k: f64) -> f64 {
-    match k {
-        0.5 => 2.53e9,
-        1.0 => 1.96e9,
-        2.0 => 1.45e9,
-        5.0 => 1.22e9,
-        _ => panic!("k = {k}"),
-    }
+    table_4_3()
+        .expect("Table 4-3 data")
+        .iter()
+        .find(|r| r.k == k)
+        .unwrap_or_else(|| panic!("k = {k}"))
+        .p0_gpa
+        * 1e9
 }
 
 /// Appendix VII-A: side slip only, m and μ of Table 4-2. Zero spin: the contact
@@ -104,7 +63,7 @@ fn table_4_2_p0(k: f64) -> f64 {
 /// Hertz k is.
 #[test]
 fn appendix_vii_a_side_slip_from_dimensional_inputs() {
-    let t = Csv::parse(VIIA);
+    let t = Csv::parse("appendix_vii_a_side_slip.csv", APPENDIX_VII_A);
     let u = 20.0;
     let mut dev_thy = Vec::new();
     let mut dev_act = Vec::new();
@@ -169,7 +128,7 @@ fn appendix_vii_a_side_slip_from_dimensional_inputs() {
 /// set with the report's nominal k (J2 is not printed dimensionally).
 #[test]
 fn appendix_vii_b_combined_slip_from_dimensional_inputs() {
-    let t = Csv::parse(VIIB);
+    let t = Csv::parse("appendix_vii_b_combined_slip.csv", APPENDIX_VII_B);
     let u = 20.0;
     println!("VII-B: Fx/N computed vs printed theory and measured");
     println!("  k    set  J2      rows  max|d thy|  max|d act|  RMS d act  (Fx/N)");
@@ -254,15 +213,12 @@ fn appendix_vii_b_combined_slip_from_dimensional_inputs() {
 /// the VII-B states then follows within the propagated slope error.
 #[test]
 fn table_4_3_slopes_through_the_compliance_option() {
-    let table = [
-        (0.5, 64.06, 0.0935, 66.74),
-        (1.0, 57.60, 0.0956, 65.19),
-        (2.0, 54.40, 0.100, 62.78),
-        (5.0, 52.40, 0.089, 61.10),
-    ];
+    let table = table_4_3().expect("Table 4-3 data");
+    assert_eq!(table.len(), 4);
     let steel = DiscMaterial::REPORT_STEEL;
     println!("Table 4-3 via Compliance::Discs: m_x computed vs printed");
-    for (k, m_side, mu, m_long) in table {
+    for r in table {
+        let (k, m_side, mu, m_long) = (r.k, r.m_side, r.mu, r.m_star);
         let bodies = low_speed(k);
         let hz = traction_hertz::solve_p0(&bodies.0, &bodies.1, table_4_2_p0(k)).unwrap();
         let opts = Options {
@@ -322,7 +278,7 @@ fn spin_pressure_load(trace: &str) -> (f64, f64) {
 /// crate's docs.
 #[test]
 fn appendix_vi_spin_traces_from_the_tilt_angle() {
-    let t = Csv::parse(VI);
+    let t = Csv::parse("appendix_vi_spin_traces.csv", APPENDIX_VI);
     let traces = ["79072704", "79100403", "79100403-U20", "79072601"];
     println!("App. VI: dJ5 = (Fy/N)/μ − J5 printed (theory) and − (Fy/Fz)/μ measured");
     println!(

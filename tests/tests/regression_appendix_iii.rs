@@ -4,7 +4,7 @@
 //! held out) and the leave-one-out comparison of the 1/θ' and linear-θ' forms.
 //!
 //! Run with `--nocapture` to see the comparison tables.
-#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns unwrap like the tests do
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns unwrap like the tests do
 
 use traction_fluids::{FluidName, Quantity, data_set, listing, printed_result};
 use traction_regression::{

@@ -5,7 +5,7 @@
 //! refined and Richardson-extrapolated (the scheme is first order).
 //! The same grid gives the torque T = ∫(τy·x − τx·y) dA and the dissipation
 //! directly, which decides the J6 normalisation (App. IV eq. 16 vs 17).
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
 
 use std::f64::consts::PI;
 

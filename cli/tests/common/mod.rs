@@ -1,4 +1,4 @@
-//! Shared helpers of the CLI integration tests: run the `traction` binary with
+//! Shared support of the CLI integration tests: run the `traction` binary with
 //! arguments and standard input, and collect its output.
 #![allow(dead_code)] // each test file uses a subset
 

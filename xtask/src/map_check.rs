@@ -1,22 +1,23 @@
 //! Accuracy and hit rate of `map::Map` on random points:
-//! `map_check K TOL N RLOG [DX GY]` (|x| log-uniform in [0.1, 10^(RLOG−1)], reference
+//! `map-check K TOL N RLOG [DX GY]` (|x| log-uniform in [0.1, 10^(RLOG−1)], reference
 //! `evaluate` at TOL/100). Prints the worst error, the error distribution and
 //! the map's counters.
-#![allow(missing_docs, clippy::unwrap_used)]
+#![allow(clippy::unwrap_used)]
+use crate::arg;
 use std::f64::consts::PI;
 use traction_rheology::{Accuracy, Inputs, Model, evaluate, map::Map};
 
-fn main() {
-    let a: Vec<f64> = std::env::args()
-        .skip(1)
-        .map(|s| s.parse().unwrap())
-        .collect();
-    let (k, tol, n, rlog) = (a[0], a[1], a[2] as usize, a[3]);
-    let (dx, gy) = (
-        a.get(4).copied().unwrap_or(0.0),
-        a.get(5).copied().unwrap_or(1.0),
+/// Runs the check with the command line's arguments after `map-check`.
+pub fn run(a: &[String]) -> Result<(), String> {
+    let (k, tol, n, rlog): (f64, f64, usize, f64) = (
+        arg(a, 0, "K", None)?,
+        arg(a, 1, "TOL", None)?,
+        arg(a, 2, "N", None)?,
+        arg(a, 3, "RLOG", None)?,
     );
-    let mut map = Map::new(k, dx, gy, Accuracy::new(tol).unwrap()).unwrap();
+    let (dx, gy): (f64, f64) = (arg(a, 4, "DX", Some(0.0))?, arg(a, 5, "GY", Some(1.0))?);
+    let mut map = Map::new(k, dx, gy, Accuracy::new(tol).map_err(|e| e.to_string())?)
+        .map_err(|e| e.to_string())?;
     let mut seed = 0x1234_5678_9abc_def1u64 ^ (k * 1e6) as u64;
     let mut rnd = || {
         seed ^= seed << 13;
@@ -25,7 +26,7 @@ fn main() {
         (seed >> 11) as f64 / (1u64 << 53) as f64
     };
     let (s12, s3) = (1.0 / k.sqrt(), (1.0 + 1.0 / (k * k)).sqrt());
-    let acc = Accuracy::new(tol / 100.0).unwrap();
+    let acc = Accuracy::new(tol / 100.0).map_err(|e| e.to_string())?;
     let (mut worst, mut hist) = (0.0f64, [0usize; 5]);
     let t0 = std::time::Instant::now();
     for _ in 0..n {
@@ -63,4 +64,5 @@ fn main() {
         s.cells_rejected,
         t0.elapsed().as_secs_f64()
     );
+    Ok(())
 }

@@ -1,0 +1,55 @@
+//! Developer tools of the traction workspace (`cargo xtask COMMAND ARGS`):
+//!
+//! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
+//! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
+//!   random points.
+//!
+//! These are not user examples: they measure the implementation.
+#![forbid(unsafe_code)]
+
+mod map_check;
+mod prof;
+
+const USAGE: &str = "usage: cargo xtask COMMAND ARGS
+commands:
+  prof [CASE [TOL [REPS]]]        callgrind driver: CASE m (moderate) or h (high spin),
+                                  TOL accuracy (default 1e-3), REPS evaluations (default 1)
+  map-check K TOL N RLOG [DX GY]  rheology map against evaluate at TOL/100 on N random
+                                  points, |J| log-uniform in [0.1, 10^(RLOG-1)]";
+
+fn main() -> std::process::ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let result = match args.first().map(String::as_str) {
+        Some("prof") => prof::run(&args[1..]),
+        Some("map-check") => map_check::run(&args[1..]),
+        Some("help" | "-h" | "--help") => {
+            println!("{USAGE}");
+            Ok(())
+        }
+        Some(other) => Err(format!("unknown command `{other}`")),
+        None => Err("no command given".to_string()),
+    };
+    match result {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}\n{USAGE}");
+            std::process::ExitCode::from(2)
+        }
+    }
+}
+
+/// Parses argument `i` (named `name`) as `T`, or `default` when it is absent.
+fn arg<T: std::str::FromStr>(
+    a: &[String],
+    i: usize,
+    name: &str,
+    default: Option<T>,
+) -> Result<T, String> {
+    match (a.get(i), default) {
+        (Some(s), _) => s
+            .parse()
+            .map_err(|_| format!("{name}: cannot read `{s}` as a number")),
+        (None, Some(d)) => Ok(d),
+        (None, None) => Err(format!("{name} missing")),
+    }
+}
