@@ -20,14 +20,14 @@
 //!   per-point columns — [`listing`].
 //! * `appendix_i_traces.csv` (8 reduced traces, [`appendix_i_traces`]),
 //!   `appendix_vii_e_combined.csv` (33 combined-slip tests, [`appendix_vii_e`]),
-//! * `thermal_properties.csv`: inlet viscosity, pressure–viscosity
-//!   coefficient, conductivity and temperature coefficients of μ and m for
-//!   the thermal contact model, with sources — [`ThermalProperties`].
 //!   `main_text_tables.csv` (Tables 2-6, 4-1, 4-2, 4-3, [`main_text_tables`];
 //!   Table 4-3 with its Table 4-2 source, [`table_4_3`]).
 //! * `machines.csv`, `shape_factors.csv`, `load_tests.csv`: the twin-disc
 //!   machines of Table 2-1 with Table 2-2's C ([`machines`]), Table 2-2's A, B
 //!   ([`shape_factor_table`]) and Table 2-3's load tests ([`load_tests`]).
+//! * `thermal_properties.csv`: inlet viscosity, pressure–viscosity
+//!   coefficient, conductivity and temperature coefficients of μ and m for
+//!   the thermal contact model, with sources — [`ThermalProperties`].
 //!
 //! ## Assumptions
 //! * Z for each test is C''·P0 with the C'' the report's III-E regression used

@@ -563,8 +563,8 @@ fn instantiate(
     name: &str,
     logging_on: Fmi2Boolean,
 ) -> Fmi2Component {
-    let name = CString::new(name).unwrap();
-    let g = CString::new(guid()).unwrap();
+    let name = CString::new(name).expect("instance name without NUL");
+    let g = CString::new(guid()).expect("GUID without NUL");
     let _ = sink;
     // SAFETY: valid strings and callbacks that outlive the instance.
     unsafe {

@@ -23,7 +23,10 @@ use crate::{ReproduceError, Row};
 pub const SERIES_NAME: &str = "thermal J+T (one parameter set per fluid)";
 
 fn err(what: &str, e: impl std::fmt::Display) -> ReproduceError {
-    ReproduceError::Model(format!("{what} (thermal): {e}"))
+    ReproduceError::Model {
+        context: format!("{what} (thermal)"),
+        source: e.to_string().into(),
+    }
 }
 
 /// Low-speed machine discs of Table 2-1 by k (the k = 5 Ry from Table 2-4).

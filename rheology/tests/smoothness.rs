@@ -19,8 +19,8 @@ fn max_second_difference(k: f64, p: [f64; 3], d: [f64; 3], h: f64, n: usize, tol
         .collect();
     let mut m: f64 = 0.0;
     for w in v.windows(3) {
-        for c in 0..3 {
-            m = m.max((w[2][c] - 2.0 * w[1][c] + w[0][c]).abs());
+        for ((a, b), c) in w[0].iter().zip(&w[1]).zip(&w[2]) {
+            m = m.max((c - 2.0 * b + a).abs());
         }
     }
     m
