@@ -12,7 +12,7 @@ pub enum Regime {
     ElasticWithSpin,
     /// Region III: the rigid/plastic (Coulomb-like) analysis is sufficient.
     RigidPlastic,
-    /// Not classified ([`Options::classify_regime`] = false).
+    /// Not classified ([`Options::classify_regime`](crate::Options::classify_regime) = false).
     NotClassified,
 }
 

@@ -70,10 +70,10 @@ pub enum EnvelopeRule {
     #[default]
     Strict,
     /// Evaluate the correlation outside the data, flagged in
-    /// [`Evaluation::outside_envelope`].
+    /// [`Evaluation::outside_envelope`](crate::Evaluation::outside_envelope).
     Extrapolate,
     /// Evaluate at the nearest point of the envelope (each variable clamped to
-    /// its data range), flagged in [`Evaluation::outside_envelope`]: bounded
+    /// its data range), flagged in [`Evaluation::outside_envelope`](crate::Evaluation::outside_envelope): bounded
     /// properties for simulators that pass through start-up (U → 0).
     Clamp,
 }

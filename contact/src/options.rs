@@ -13,11 +13,11 @@ pub enum Compliance {
     /// The discs are elastic (`material`, both discs alike), with Kalker's
     /// q_x = π/C11, q_y = π/C22 at this contact's k (traction-compliance).
     ///
-    /// * [`Fluid::Constant`]: m is the slope *measured* in `slope_measured_in`
+    /// * [`Fluid::Constant`](crate::Fluid::Constant): m is the slope *measured* in `slope_measured_in`
     ///   on this contact (the report measured side-slip slopes); the slope of
     ///   the other direction follows from App. IV eq. B7 at the same contact
     ///   and P0 (the Table 4-3 operation).
-    /// * [`Fluid::Physical`]: Ḡ is the film's own modulus; each direction's
+    /// * [`Fluid::Physical`](crate::Fluid::Physical): Ḡ is the film's own modulus; each direction's
     ///   slope is the film and the discs in series (App. IV A3):
     ///   1/m_i = 1/m_film + 1/m'_i with the dry slope m'_i = 3G_s/(2 q_i P0) (B3).
     ///   `slope_measured_in` is not used.

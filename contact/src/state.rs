@@ -83,7 +83,7 @@ impl OperatingState {
             .build()
     }
 
-    /// Check the ranges (the fields are public, so [`TractionContact::evaluate`] checks again).
+    /// Check the ranges (the fields are public, so [`TractionContact::evaluate`](crate::TractionContact::evaluate) checks again).
     pub fn validate(&self) -> Result<(), ContactError> {
         check(
             "load N (normal load, N)",

@@ -124,7 +124,7 @@
 //! ## Accuracy
 //! [`Accuracy`] sets the target absolute error of J4, J5, J6; tests check it
 //! against converged solutions and a second, independent grid method
-//! ([`reference`]: the strip integrator at a fixed resolution, the grid
+//! ([`reference`](mod@reference): the strip integrator at a fixed resolution, the grid
 //! scheme).
 //!
 //! ## Example

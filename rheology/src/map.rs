@@ -396,7 +396,7 @@ impl Map {
         Ok(self.cells.get(&key).and_then(|v| v.as_ref()))
     }
 
-    /// The rigid/plastic model ([`crate::rigid_plastic`]) at (J1, J2, J3)
+    /// The rigid/plastic model (`Model::RigidPlastic` of [`crate::evaluate`]) at the inputs
     /// through a second, two-dimensional map over the direction (θ, φ) of x
     /// (the rigid/plastic solution depends on the direction only), bicubic,
     /// with the same cell check and refinement. J3 = 0 and J = 0 are
