@@ -226,13 +226,13 @@ fn null(func: &str, what: &str) -> FmuError {
 }
 
 /// fmi2GetTypesPlatform.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub extern "C" fn fmi2GetTypesPlatform() -> Fmi2String {
     c"default".as_ptr()
 }
 
 /// fmi2GetVersion.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub extern "C" fn fmi2GetVersion() -> Fmi2String {
     c"2.0".as_ptr()
 }
@@ -241,7 +241,7 @@ pub extern "C" fn fmi2GetVersion() -> Fmi2String {
 ///
 /// # Safety
 /// Strings must be NULL or valid C strings; `functions` NULL or valid.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2Instantiate(
     instance_name: Fmi2String,
     fmu_type: Fmi2Type,
@@ -302,7 +302,7 @@ pub unsafe extern "C" fn fmi2Instantiate(
 ///
 /// # Safety
 /// `c` must be NULL or a pointer from [`fmi2Instantiate`] not yet freed.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2FreeInstance(c: Fmi2Component) {
     if c.is_null() {
         return;
@@ -322,7 +322,7 @@ pub unsafe extern "C" fn fmi2FreeInstance(c: Fmi2Component) {
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`]; `categories` NULL (n = 0) or n valid strings.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SetDebugLogging(
     c: Fmi2Component,
     logging_on: Fmi2Boolean,
@@ -354,7 +354,7 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SetupExperiment(
     c: Fmi2Component,
     _tolerance_defined: Fmi2Boolean,
@@ -372,7 +372,7 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2EnterInitializationMode(c: Fmi2Component) -> Fmi2Status {
     with_instance(c, "fmi2EnterInitializationMode", |i| {
         i.model.enter_initialization_mode()
@@ -383,7 +383,7 @@ pub unsafe extern "C" fn fmi2EnterInitializationMode(c: Fmi2Component) -> Fmi2St
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2ExitInitializationMode(c: Fmi2Component) -> Fmi2Status {
     with_instance(c, "fmi2ExitInitializationMode", |i| {
         i.model.exit_initialization_mode(&mut i.log)
@@ -394,7 +394,7 @@ pub unsafe extern "C" fn fmi2ExitInitializationMode(c: Fmi2Component) -> Fmi2Sta
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2Terminate(c: Fmi2Component) -> Fmi2Status {
     with_instance(c, "fmi2Terminate", |i| i.model.terminate())
 }
@@ -403,7 +403,7 @@ pub unsafe extern "C" fn fmi2Terminate(c: Fmi2Component) -> Fmi2Status {
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2Reset(c: Fmi2Component) -> Fmi2Status {
     with_instance(c, "fmi2Reset", |i| i.model.reset())
 }
@@ -412,7 +412,7 @@ pub unsafe extern "C" fn fmi2Reset(c: Fmi2Component) -> Fmi2Status {
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`]; `vr` and `value` NULL (n = 0) or n elements.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetReal(
     c: Fmi2Component,
     vr: *const Fmi2ValueReference,
@@ -432,7 +432,7 @@ pub unsafe extern "C" fn fmi2GetReal(
 ///
 /// # Safety
 /// As [`fmi2GetReal`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetInteger(
     c: Fmi2Component,
     vr: *const Fmi2ValueReference,
@@ -452,7 +452,7 @@ pub unsafe extern "C" fn fmi2GetInteger(
 ///
 /// # Safety
 /// As [`fmi2GetReal`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetBoolean(
     c: Fmi2Component,
     vr: *const Fmi2ValueReference,
@@ -477,7 +477,7 @@ pub unsafe extern "C" fn fmi2GetBoolean(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetString(
     c: Fmi2Component,
     _vr: *const Fmi2ValueReference,
@@ -497,7 +497,7 @@ pub unsafe extern "C" fn fmi2GetString(
 ///
 /// # Safety
 /// As [`fmi2GetReal`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SetReal(
     c: Fmi2Component,
     vr: *const Fmi2ValueReference,
@@ -517,7 +517,7 @@ pub unsafe extern "C" fn fmi2SetReal(
 ///
 /// # Safety
 /// As [`fmi2GetReal`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SetInteger(
     c: Fmi2Component,
     vr: *const Fmi2ValueReference,
@@ -537,7 +537,7 @@ pub unsafe extern "C" fn fmi2SetInteger(
 ///
 /// # Safety
 /// As [`fmi2GetReal`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SetBoolean(
     c: Fmi2Component,
     vr: *const Fmi2ValueReference,
@@ -558,7 +558,7 @@ pub unsafe extern "C" fn fmi2SetBoolean(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SetString(
     c: Fmi2Component,
     _vr: *const Fmi2ValueReference,
@@ -573,7 +573,7 @@ pub unsafe extern "C" fn fmi2SetString(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`]; `state` a valid pointer to NULL or to a state of this FMU.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetFMUstate(c: Fmi2Component, state: *mut Fmi2FmuState) -> Fmi2Status {
     with_instance(c, "fmi2GetFMUstate", |i| {
         if state.is_null() {
@@ -625,7 +625,7 @@ unsafe fn state_ref<'a>(s: Fmi2FmuState, func: &str) -> Result<&'a mut StateBox,
 ///
 /// # Safety
 /// `state` NULL or a state of this FMU (from fmi2GetFMUstate or fmi2DeSerializeFMUstate).
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, state: Fmi2FmuState) -> Fmi2Status {
     with_instance(c, "fmi2SetFMUstate", |i| {
         // SAFETY: forwarded contract.
@@ -638,7 +638,7 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, state: Fmi2FmuState) 
 ///
 /// # Safety
 /// `state` NULL, or a valid pointer to NULL or to a state of this FMU.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2FreeFMUstate(
     c: Fmi2Component,
     state: *mut Fmi2FmuState,
@@ -666,7 +666,7 @@ pub unsafe extern "C" fn fmi2FreeFMUstate(
 ///
 /// # Safety
 /// `state` NULL or a state of this FMU; `size` a valid pointer.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
     c: Fmi2Component,
     state: Fmi2FmuState,
@@ -688,7 +688,7 @@ pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
 ///
 /// # Safety
 /// `state` NULL or a state of this FMU; `bytes` valid for `size` bytes.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SerializeFMUstate(
     c: Fmi2Component,
     state: Fmi2FmuState,
@@ -717,7 +717,7 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(
 ///
 /// # Safety
 /// `bytes` valid for `size` bytes; `state` a valid pointer to NULL or to a state of this FMU.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
     c: Fmi2Component,
     bytes: *const Fmi2Byte,
@@ -760,7 +760,7 @@ fn unsupported(c: Fmi2Component, func: &str) -> Fmi2Status {
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
     c: Fmi2Component,
     _vu: *const Fmi2ValueReference,
@@ -777,7 +777,7 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
     c: Fmi2Component,
     _vr: *const Fmi2ValueReference,
@@ -792,7 +792,7 @@ pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
     c: Fmi2Component,
     _vr: *const Fmi2ValueReference,
@@ -807,7 +807,7 @@ pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2DoStep(
     c: Fmi2Component,
     current: Fmi2Real,
@@ -823,7 +823,7 @@ pub unsafe extern "C" fn fmi2DoStep(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2CancelStep(c: Fmi2Component) -> Fmi2Status {
     unsupported(c, "fmi2CancelStep")
 }
@@ -832,7 +832,7 @@ pub unsafe extern "C" fn fmi2CancelStep(c: Fmi2Component) -> Fmi2Status {
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetStatus(
     c: Fmi2Component,
     _s: Fmi2StatusKind,
@@ -845,7 +845,7 @@ pub unsafe extern "C" fn fmi2GetStatus(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`]; `value` a valid pointer.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetRealStatus(
     c: Fmi2Component,
     s: Fmi2StatusKind,
@@ -868,7 +868,7 @@ pub unsafe extern "C" fn fmi2GetRealStatus(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetIntegerStatus(
     c: Fmi2Component,
     _s: Fmi2StatusKind,
@@ -881,7 +881,7 @@ pub unsafe extern "C" fn fmi2GetIntegerStatus(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`]; `value` a valid pointer.
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetBooleanStatus(
     c: Fmi2Component,
     s: Fmi2StatusKind,
@@ -904,7 +904,7 @@ pub unsafe extern "C" fn fmi2GetBooleanStatus(
 ///
 /// # Safety
 /// `c` from [`fmi2Instantiate`].
-#[unsafe(no_mangle)]
+#[cfg_attr(not(feature = "no-export"), unsafe(no_mangle))]
 pub unsafe extern "C" fn fmi2GetStringStatus(
     c: Fmi2Component,
     _s: Fmi2StatusKind,
