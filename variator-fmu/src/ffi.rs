@@ -13,6 +13,9 @@
 //! The instance is a `Box` owned by the host through the `fmi2Component`
 //! pointer; there is no global state.
 #![allow(unsafe_code)]
+// The FMI 2.0 standard names these functions (fmi2DoStep, ...); with the "no-export"
+// feature they are plain Rust functions and the lint would ask for snake case.
+#![allow(non_snake_case)]
 
 use std::ffi::{CStr, CString, c_char, c_int, c_uint, c_void};
 use std::panic::{AssertUnwindSafe, catch_unwind};
