@@ -146,7 +146,9 @@ fn report_fluid_through_start_up_warns_once_and_stays_finite() {
     f.enter_initialization_mode().unwrap();
     let mut log = Capture(Vec::new());
     f.exit_initialization_mode(&mut log).unwrap();
-    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE).chain(vr::J1..=vr::J7).collect();
+    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
+        .chain(vr::J1..=vr::J7)
+        .collect();
     let mut o = vec![0.0; all.len()];
     for k in 0..200 {
         // Run up from rest with 1 % slip.
@@ -179,7 +181,9 @@ fn state_round_trip_is_bit_exact() {
     let back = TractionFmu::deserialize_state(&bytes).unwrap();
     assert_eq!(TractionFmu::serialize_state(&back), bytes);
     let mut o1 = [0.0; N_OUT];
-    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE).chain(vr::J1..=vr::J7).collect();
+    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
+        .chain(vr::J1..=vr::J7)
+        .collect();
     f.do_step(0.1, 0.1, &mut NullLogger).unwrap();
     f.get_real(&all, &mut o1, &mut NullLogger).unwrap();
     f.set_real(&[vr::OMEGA1], &[1.0]).unwrap();
@@ -258,7 +262,9 @@ fn run(
     )?;
     f.enter_initialization_mode()?;
     f.exit_initialization_mode(&mut NullLogger)?;
-    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE).chain(vr::J1..=vr::J7).collect();
+    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
+        .chain(vr::J1..=vr::J7)
+        .collect();
     let mut o = vec![0.0; all.len()];
     f.get_real(&all, &mut o, &mut NullLogger)?;
     Ok((f, o))
@@ -498,7 +504,10 @@ fn thermal_parameter_equals_traction_contact() {
     assert!(rise > 1.0, "side slip and spin heat the film: {rise} K");
     assert!((rise - d.temperature_rise).abs() <= 1e-12 * rise);
     let fy = |o: &[f64]| o[out_index(vr::FY).unwrap()];
-    assert!(fy(&on).abs() < fy(&off).abs(), "heating lowers the traction");
+    assert!(
+        fy(&on).abs() < fy(&off).abs(),
+        "heating lowers the traction"
+    );
     // A report fluid: its own property set (Thermal::default()).
     let (_, tdf) = run(&[], &[(vr::FLUID, 2)], &[(vr::THERMAL, true)]).unwrap();
     let fluid = traction_contact::Fluid::tdf_88(traction_contact::EnvelopeRule::Clamp).unwrap();
@@ -525,12 +534,7 @@ fn thermal_parameter_equals_traction_contact() {
     assert!(e.message.contains("mu_temperature_coefficient"), "{e}");
     // Thermal off: the thermal parameters are not used (not checked).
     assert!(run(&[(vr::FILM_THICKNESS, 0.0)], &[], &[]).is_ok());
-    let e = run(
-        &[],
-        &[],
-        &[(vr::THERMAL, true), (vr::SPIN_PEAK, true)],
-    )
-    .unwrap_err();
+    let e = run(&[], &[], &[(vr::THERMAL, true), (vr::SPIN_PEAK, true)]).unwrap_err();
     assert!(e.message.contains("spin-peak"), "{e}");
 }
 
