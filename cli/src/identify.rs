@@ -17,7 +17,8 @@
 //! forces. A row's *baseline* m, μ, μ_s are its `m,mu,mu_spin` cells or, with
 //! a `fluid` column, the named fluid's correlations evaluated at the row's
 //! P0, |U|, θ, k (as `traction contact` would, before any compliance
-//! correction). The fitted parameters act on the baselines as listed in
+//! correction); a row with both a fluid and `m,mu` cells takes the cells (the
+//! values at the inlet, as in `traction contact`). The fitted parameters act on the baselines as listed in
 //! [`PARAMETERS`]: `m`, `mu`, `mu_spin` replace the baseline by one value for
 //! all rows (one operating condition); `m_factor`, `mu_factor` multiply each
 //! row's baseline (several conditions, the fluid's correlation trends kept);
@@ -393,7 +394,8 @@ impl Point {
 
     /// The film thickness the row's thermal model would use, m.
     fn film_thickness(&self, th: &Thermal) -> Result<f64, String> {
-        let g = traction_hertz::Geometry::new(&self.body1, &self.body2).map_err(|e| e.to_string())?;
+        let g =
+            traction_hertz::Geometry::new(&self.body1, &self.body2).map_err(|e| e.to_string())?;
         let s = &self.state;
         let hd = |viscosity: f64, alpha: f64| {
             traction_contact::thermal::hamrock_dowson_central(
@@ -720,7 +722,21 @@ fn read_points(
                         e.outside_envelope
                     );
                 }
-                (Some(e.m_used), Some(e.mu_used), None)
+                // Given m, μ cells override the correlation (as in `traction
+                // contact`: the values at the inlet, the fluid supplying the
+                // temperature dependence and film of the thermal model).
+                let given = |c: &str| {
+                    if table.has(c) {
+                        table.opt_f64(row, c)
+                    } else {
+                        Ok(None)
+                    }
+                };
+                (
+                    Some(given("m")?.unwrap_or(e.m_used)),
+                    Some(given("mu")?.unwrap_or(e.mu_used)),
+                    None,
+                )
             }
             None => {
                 let (m, mu) = (table.opt_f64(row, "m")?, table.opt_f64(row, "mu")?);
