@@ -483,6 +483,8 @@ pub struct VIIEPeak {
     /// The thermal contact's peak traction coefficient at the point's spin
     /// and side slip.
     pub thermal: f64,
+    /// The slip ratio ΔU/U of the thermal peak.
+    pub slip_at_peak: f64,
     /// The point is the reference itself (an input, not a prediction).
     pub is_reference: bool,
 }
@@ -498,7 +500,7 @@ fn peak_over_slip(
     dv: f64,
     w: f64,
     theta: f64,
-) -> Result<f64, ReproduceError> {
+) -> Result<(f64, f64), ReproduceError> {
     let fx = |r: f64| -> Result<f64, ReproduceError> {
         Ok(evaluate(c, load, u, r * u, dv, w, theta)?.traction_x)
     };
@@ -530,7 +532,12 @@ fn peak_over_slip(
             f2 = fx(x2.exp())?;
         }
     }
-    Ok(values[best].max(f1).max(f2))
+    Ok([(values[best], grid[best]), (f1, x1.exp()), (f2, x2.exp())]
+        .into_iter()
+        .fold(
+            (f64::NEG_INFINITY, 0.0),
+            |a, b| if b.0 > a.0 { b } else { a },
+        ))
 }
 
 /// Appendix VII-E: the thermal contact's peak traction coefficient under
@@ -578,11 +585,12 @@ pub fn appendix_vii_e(beta: Option<[f64; 2]>) -> Result<Vec<VIIEPeak>, Reproduce
                 0.0
             };
             let dv = p.side_slip_pct / 100.0 * u;
-            let thermal = peak_over_slip(&c, hz.load, u, dv, w, 70.0)?;
+            let (thermal, slip_at_peak) = peak_over_slip(&c, hz.load, u, dv, w, 70.0)?;
             Ok(VIIEPeak {
                 point: p.clone(),
                 reference_mu: r.mu,
                 thermal,
+                slip_at_peak,
                 is_reference: std::ptr::eq(p, r),
             })
         })
