@@ -168,8 +168,10 @@ def test_libcosim_drivetrain_from_the_osp_system_structure(fmu_path, fmpy_drivet
     # variator's torque one step later than in the FMPy loop, which steps
     # them in sequence), and the vehicle FMU integrates its step in ten
     # Euler sub-steps where the FMPy master takes one. Both are first order
-    # in the 5 ms step; the vehicle speed agrees to 1 % (measured 0.1 %) and
-    # the efficiency to 0.01 while the vehicle follows the ratio (t ≤ 5 s).
+    # in the 5 ms step; the vehicle speed agrees to 1 % (measured ≤ 0.38 %
+    # over the run) and the efficiency to 0.01 while the vehicle follows the
+    # ratio (t ≤ 5 s; measured ≤ 0.0013 after the first ten steps, whose
+    # start-up transient is checked only through the power balance).
     fmpy_at = {round(h["time"] / drivetrain_libcosim.STEP): h for h in fmpy_drivetrain}
     for h in hist:
         k = round(h["time"] / drivetrain_libcosim.STEP)
