@@ -4,8 +4,8 @@ The engine is speed-governed (it holds omega_in at 300 rad/s and supplies
 whatever torque the variator draws). The vehicle is an inertia at the output
 disc with road load: mass 1000 kg, wheel radius 0.3 m,
 final drive 10, rolling resistance 0.012 and aerodynamic drag 0.5 * 1.2 * 0.7 m^2 * v^2.
-The tilt sweeps linearly from +0.5 rad (underdrive, ratio 0.55) to -0.5 rad
-(overdrive, ratio 1.82). The master integrates the vehicle with explicit
+The tilt sweeps linearly from +0.5 rad (underdrive, ratio 0.483) to -0.5 rad
+(overdrive, ratio 2.07). The master integrates the vehicle with explicit
 Euler at step h and feeds omega_out back to the FMU.
 
 Run as a script to plot ratio, efficiency and spin loss against time
@@ -80,7 +80,8 @@ def run(fmu_path, t_end=8.0, h=5e-3, end_load=20e3):
     return hist
 
 
-def plot(hist, out_dir):
+def plot(hist, out_dir, name="drivetrain.png",
+         title="Engine 300 rad/s -> variator -> 1000 kg vehicle, tilt swept +0.5 -> -0.5 rad"):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -100,9 +101,9 @@ def plot(hist, out_dir):
     ax[2].set_ylabel("power (W)")
     ax[2].set_xlabel("time (s)")
     ax[2].legend()
-    fig.suptitle("Engine 300 rad/s -> variator -> 1000 kg vehicle, tilt swept +0.5 -> -0.5 rad")
+    fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(f"{out_dir}/drivetrain.png", dpi=90)
+    fig.savefig(f"{out_dir}/{name}", dpi=90)
 
 
 if __name__ == "__main__":

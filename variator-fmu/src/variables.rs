@@ -77,6 +77,7 @@ pub const UNITS: &[(&str, [i32; 8], f64)] = &[
     ("W", [1, 2, -3, 0, 0, 0, 0, 0], 0.0),
     ("Pa", [1, -1, -2, 0, 0, 0, 0, 0], 0.0),
     ("degC", [0, 0, 0, 0, 1, 0, 0, 0], 273.15),
+    ("K", [0, 0, 0, 0, 1, 0, 0, 0], 0.0),
     ("1", [0; 8], 0.0),
 ];
 
@@ -169,6 +170,8 @@ pub mod vr {
     pub const ENVELOPE: u32 = 15;
     /// Interpolation map on/off (Boolean).
     pub const MAP: u32 = 16;
+    /// Thermal contact model on/off (Boolean).
+    pub const THERMAL: u32 = 17;
     /// Input-disc speed.
     pub const OMEGA_IN: u32 = 20;
     /// Output-disc speed.
@@ -218,7 +221,7 @@ pub const N_INPUTS: usize = 5;
 /// Number of variator-level Real outputs.
 pub const N_VARIATOR_OUTPUTS: usize = 11;
 /// Number of Real outputs per contact.
-pub const N_CONTACT_OUTPUTS: usize = 11;
+pub const N_CONTACT_OUTPUTS: usize = 12;
 /// Number of Real outputs.
 pub const N_REAL_OUTPUTS: usize = N_VARIATOR_OUTPUTS + 2 * N_CONTACT_OUTPUTS;
 
@@ -275,6 +278,11 @@ pub const CONTACT_OUTPUTS: [(&str, &str, &str); N_CONTACT_OUTPUTS] = [
         "max_pressure",
         "Pa",
         "maximum Hertz pressure P0 of the contact, Pa",
+    ),
+    (
+        "temperature_rise",
+        "K",
+        "film temperature rise of the contact above the inlet temperature (thermal = true; 0 otherwise), K",
     ),
 ];
 
@@ -424,6 +432,16 @@ macro_rules! contact_outputs {
                 false,
                 concat!($side, " contact: maximum Hertz pressure P0, Pa"),
             ),
+            real_out(
+                concat!("temperature_rise_", $suffix),
+                $base + 11,
+                "K",
+                false,
+                concat!(
+                    $side,
+                    " contact: film temperature rise above the inlet temperature (thermal = true; 0 otherwise), K"
+                ),
+            ),
         ]
     };
 }
@@ -515,7 +533,7 @@ const PARAMS: [Variable; N_REAL_PARAMS] = [
     ),
 ];
 
-const DISCRETE_PARAMS: [Variable; 4] = [
+const DISCRETE_PARAMS: [Variable; 5] = [
     Variable {
         name: "number_of_rollers",
         vr: vr::ROLLERS,
@@ -554,8 +572,16 @@ const DISCRETE_PARAMS: [Variable; 4] = [
         name: "rheology_map",
         vr: vr::MAP,
         causality: Causality::Parameter,
-        kind: Kind::Boolean { start: true },
-        description: "evaluate the J+T model through each contact's lazily built interpolation map (checked against the direct solution; ~1 us once a region is visited, tens of ms when a new region or a new tilt is first entered); false: integrate the strips at every evaluation",
+        kind: Kind::Boolean { start: false },
+        description: "evaluate the J+T model through each contact's lazily built interpolation map (checked against the direct solution; ~10 us per step once a region is visited at a fixed tilt, but 0.5-2 s whenever a new tilt is first entered: new contacts, new maps); false (default): integrate the strips at every evaluation (~10 ms per step with spin)",
+        tilt_only: false,
+    },
+    Variable {
+        name: "thermal",
+        vr: vr::THERMAL,
+        causality: Causality::Parameter,
+        kind: Kind::Boolean { start: false },
+        description: "thermal contact model (traction-contact Options::thermal with the fluid's own film and temperature coefficients; needs fluid = 1 or 2): each film's temperature rise solved from the contact's own loss, about 3x the cost; false (default): isothermal at the inlet temperature",
         tilt_only: false,
     },
 ];
@@ -708,7 +734,7 @@ const REGIMES: [Variable; 2] = [
     },
 ];
 
-const N_ALL: usize = N_REAL_PARAMS + 4 + N_INPUTS + N_REAL_OUTPUTS + 2;
+const N_ALL: usize = N_REAL_PARAMS + DISCRETE_PARAMS.len() + N_INPUTS + N_REAL_OUTPUTS + 2;
 
 const fn all() -> [Variable; N_ALL] {
     let mut out = [PARAMS[0]; N_ALL];

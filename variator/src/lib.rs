@@ -91,7 +91,9 @@
 //! All rollers share load and motion equally (one roller is solved, disc
 //! torques are n times its share). Rigid discs and rollers apart from the
 //! Hertz contact (and the disc compliance option of `traction-contact`),
-//! steady state at each call, isothermal contacts at the inlet temperature.
+//! steady state at each call, isothermal contacts at the inlet temperature
+//! unless [`Options::thermal`] is on (each contact's film temperature rise is
+//! then solved from its own loss: [`ContactResult::temperature_rise`]).
 //! Ranges (errors name the quantity): `0 < r22 < r0`, `0 < θ0 ≤ π/2`,
 //! `1 ≤ n ≤ 16`, `|γ| < θ0` with both contact radii positive, disc speeds
 //! finite with `|ω| ≤ 1e5 rad/s`, `0 ≤ F_a ≤ 1e9 N`, θ above −273.15 °C;
@@ -128,7 +130,8 @@ use std::sync::{Arc, Mutex, PoisonError};
 pub use error::VariatorError;
 use error::check;
 use traction_contact::{
-    Body, DiscMaterial, Evaluation, Fluid, OperatingState, Options, Regime, TractionContact,
+    Body, DiscMaterial, Evaluation, Fluid, MapStats, OperatingState, Options, Regime,
+    TractionContact,
 };
 use traction_kinematics::{
     BodyMotion, ContactKinematics, HalfToroidalVariator, Vector3, contact_kinematics,
@@ -346,6 +349,12 @@ impl ContactResult {
         self.evaluation.traction_x
     }
 
+    /// Film temperature rise above the inlet temperature, K (0 unless
+    /// [`Options::thermal`] is on).
+    pub fn temperature_rise(&self) -> f64 {
+        self.evaluation.temperature_rise
+    }
+
     /// Regime of the contact (App. IV figure 14 of the report).
     pub fn regime(&self) -> Regime {
         self.evaluation.regime
@@ -400,10 +409,11 @@ struct ContactSetup {
     radius: f64,
     /// Normal load per unit end load, 1/(n sin(θ0 ∓ γ)).
     load_per_end_load: f64,
-    /// Contact point, normal (roller → disc) and rolling direction.
-    point: Vector3<f64>,
-    normal: Vector3<f64>,
-    rolling: Vector3<f64>,
+    /// Contact kinematics at unit disc speed (roller at rest) and at unit
+    /// roller speed (disc at rest): every kinematic quantity is linear in the
+    /// two speeds.
+    kin_disc: ContactKinematics,
+    kin_roller: ContactKinematics,
     /// Lever factors of (Fx, Fy, Mz) in the roller torque about −d.
     roller_lever: [f64; 3],
     /// Lever factors of (Fx, Fy, Mz) in the moment on the disc about the main axis +x.
@@ -434,6 +444,8 @@ pub struct ToroidalVariator {
     options: Options,
     /// Contacts built for the last tilt (rebuilt when the tilt changes).
     cache: Mutex<Option<Arc<TiltSetup>>>,
+    /// Where the last roller balance found its root (the next solve starts there).
+    hint: Mutex<Option<solve::Hint>>,
 }
 
 impl Clone for ToroidalVariator {
@@ -446,6 +458,7 @@ impl Clone for ToroidalVariator {
             fluid: self.fluid.clone(),
             options: self.options,
             cache: Mutex::new(self.cached()),
+            hint: Mutex::new(*self.hint.lock().unwrap_or_else(PoisonError::into_inner)),
         }
     }
 }
@@ -490,6 +503,7 @@ impl ToroidalVariator {
             fluid,
             options,
             cache: Mutex::new(None),
+            hint: Mutex::new(None),
         };
         v.setup(0.0)?;
         Ok(v)
@@ -508,6 +522,25 @@ impl ToroidalVariator {
     /// The fluid.
     pub fn fluid(&self) -> &Fluid {
         &self.fluid
+    }
+
+    /// Counters of the interpolation maps ([`Options::map`]) of the contacts
+    /// of the last tilt evaluated, as (input, output) of the roller-balance
+    /// contacts and (input, output) of the reporting contacts (None: no map
+    /// used yet, or no separate reporting contact).
+    pub fn map_stats(&self) -> [Option<MapStats>; 4] {
+        match self.cached() {
+            Some(s) => [
+                s.input.solve.map_stats(),
+                s.output.solve.map_stats(),
+                s.input.report.as_ref().and_then(TractionContact::map_stats),
+                s.output
+                    .report
+                    .as_ref()
+                    .and_then(TractionContact::map_stats),
+            ],
+            None => [None; 4],
+        }
     }
 
     /// The geometry in `traction-kinematics` terms.
@@ -566,7 +599,11 @@ impl ToroidalVariator {
         let mut solve_opts = self.options;
         solve_opts.classify_regime = false;
         report_opts.classify_regime = self.options.classify_regime;
-        let make = |point: Vector3<f64>, rolling: Vector3<f64>, angle: f64, radius: f64| {
+        let make = |point: Vector3<f64>,
+                    rolling: Vector3<f64>,
+                    angle: f64,
+                    radius: f64,
+                    disc_axis: Vector3<f64>| {
             let normal = (point - centre) / r0;
             let lateral = normal.cross(&rolling);
             let disc = Body::new(
@@ -613,14 +650,18 @@ impl ToroidalVariator {
                 arm.cross(&lateral).dot(&z),
                 normal.dot(&z),
             ];
+            let kin = |disc: Vector3<f64>, roller: f64| {
+                let d = BodyMotion::rotating(disc, Vector3::zeros());
+                let r = BodyMotion::rotating(axis * roller, centre);
+                contact_kinematics(&d, &r, point, normal, rolling)
+            };
             Ok::<_, VariatorError>(ContactSetup {
                 solve,
                 report,
                 radius,
                 load_per_end_load: 1.0 / (n * angle.sin()),
-                point,
-                normal,
-                rolling,
+                kin_disc: kin(disc_axis, 0.0)?,
+                kin_roller: kin(Vector3::zeros(), 1.0)?,
                 roller_lever,
                 disc_lever,
                 side,
@@ -632,12 +673,14 @@ impl ToroidalVariator {
             state.input.frame.rolling,
             th - tilt,
             state.input_radius,
+            Vector3::x(),
         )?;
         let output = make(
             state.output_point,
             state.output.frame.rolling,
             th + tilt,
             state.output_radius,
+            -Vector3::x(),
         )?;
         Ok(TiltSetup {
             tilt,
@@ -645,22 +688,6 @@ impl ToroidalVariator {
             input,
             output,
         })
-    }
-
-    /// Contact kinematics of one contact with the disc at angular velocity
-    /// `disc` (vector) and the roller at speed `roller` about −d.
-    fn contact_kin(
-        &self,
-        s: &ContactSetup,
-        disc: Vector3<f64>,
-        roller: f64,
-        tilt: f64,
-    ) -> Result<ContactKinematics> {
-        let centre = Vector3::new(0.0, self.cavity.cavity_centre_radius, 0.0);
-        let axis = -Vector3::new(tilt.sin(), -tilt.cos(), 0.0);
-        let d = BodyMotion::rotating(disc, Vector3::zeros());
-        let r = BodyMotion::rotating(axis * roller, centre);
-        Ok(contact_kinematics(&d, &r, s.point, s.normal, s.rolling)?)
     }
 
     /// Evaluate the variator at an operating point: solve the roller speed,
@@ -672,16 +699,9 @@ impl ToroidalVariator {
     pub fn evaluate(&self, p: &OperatingPoint) -> Result<VariatorResult> {
         p.validate()?;
         let s = self.setup(p.tilt)?;
-        let w_in = Vector3::x() * p.input_speed;
-        let w_out = -Vector3::x() * p.output_speed;
-        // Kinematics = disc part + ω_r · roller part (exact superposition).
-        let lin = |c: &ContactSetup, w: Vector3<f64>| -> Result<solve::Linear> {
-            let disc = self.contact_kin(c, w, 0.0, p.tilt)?;
-            let roller = self.contact_kin(c, Vector3::zeros(), 1.0, p.tilt)?;
-            Ok(solve::Linear::new(&disc, &roller))
-        };
-        let kin_in = lin(&s.input, w_in)?;
-        let kin_out = lin(&s.output, w_out)?;
+        // Kinematics = ω_disc · disc part + ω_r · roller part (exact superposition).
+        let kin_in = solve::Linear::new(&s.input.kin_disc, p.input_speed, &s.input.kin_roller);
+        let kin_out = solve::Linear::new(&s.output.kin_disc, p.output_speed, &s.output.kin_roller);
         let n_in = p.end_load * s.input.load_per_end_load;
         let n_out = p.end_load * s.output.load_per_end_load;
         let theta = p.inlet_temperature_celsius;
@@ -690,21 +710,45 @@ impl ToroidalVariator {
             Ok(OperatingState::new(load, u, du, dv, sp, theta)?)
         };
         let mut count = 0u32;
-        let mut torque = |w: f64| -> Result<f64> {
+        // The last evaluation of the solve, reused for the report when the
+        // solve and report contacts are the same (no regime classification).
+        let mut last = None;
+        let mut torque = |w: f64| -> Result<solve::Torque> {
             count += 1;
             let ei = s.input.solve.evaluate(&op(&kin_in, n_in, w)?)?;
             let eo = s.output.solve.evaluate(&op(&kin_out, n_out, w)?)?;
-            Ok(lever(&s.input.roller_lever, &ei) + lever(&s.output.roller_lever, &eo))
+            last = Some((w, ei, eo));
+            let (ti, to) = (
+                lever(&s.input.roller_lever, &ei),
+                lever(&s.output.roller_lever, &eo),
+            );
+            Ok((ti + to, ti.abs() + to.abs()))
         };
         // Roller speeds of zero slip at either contact.
         let wa = kin_in.zero_slip_speed();
         let wb = kin_out.zero_slip_speed();
-        let w = solve::balance(&mut torque, wa, wb)?;
-        let residual = torque(w)?;
+        let hint = *self.hint.lock().unwrap_or_else(PoisonError::into_inner);
+        let (w, next) = solve::balance_warm(&mut torque, wa, wb, hint)?;
+        *self.hint.lock().unwrap_or_else(PoisonError::into_inner) = next;
         let iterations = count;
-        let report = |c: &ContactSetup, k: &solve::Linear, load: f64| -> Result<ContactResult> {
+        let last = last.filter(|l| l.0.to_bits() == w.to_bits());
+        let report = |c: &ContactSetup,
+                      k: &solve::Linear,
+                      load: f64,
+                      input: bool|
+         -> Result<ContactResult> {
             let st = op(k, load, w)?;
-            let e = c.report.as_ref().unwrap_or(&c.solve).evaluate(&st)?;
+            let e = match (&c.report, last) {
+                (Some(r), _) => r.evaluate(&st)?,
+                (None, Some((_, ei, eo))) => {
+                    if input {
+                        ei
+                    } else {
+                        eo
+                    }
+                }
+                (None, None) => c.solve.evaluate(&st)?,
+            };
             Ok(ContactResult {
                 radius: c.radius,
                 normal_load: load,
@@ -716,8 +760,12 @@ impl ToroidalVariator {
                 evaluation: e,
             })
         };
-        let ci = report(&s.input, &kin_in, n_in)?;
-        let co = report(&s.output, &kin_out, n_out)?;
+        let ci = report(&s.input, &kin_in, n_in, true)?;
+        let co = report(&s.output, &kin_out, n_out, false)?;
+        // The report's forces are the solve's (the contacts differ only in
+        // the regime classification, done after the forces).
+        let residual = lever(&s.input.roller_lever, &ci.evaluation)
+            + lever(&s.output.roller_lever, &co.evaluation);
         let n = f64::from(self.cavity.rollers);
         let torque_in = n * lever(&s.input.disc_lever, &ci.evaluation);
         // Output disc: moment about −x.

@@ -225,18 +225,9 @@ fn agrees_with_the_kinematics_variator_state() {
     let w_out = w_in * st.speed_ratio;
     // Roller speed about −d: |roller angular velocity|.
     let w_r = st.roller_angular_velocity.norm();
-    let lin_in = solve::Linear::new(
-        &v.contact_kin(&s.input, Vector3::x() * w_in, 0.0, tilt)
-            .unwrap(),
-        &v.contact_kin(&s.input, Vector3::zeros(), 1.0, tilt)
-            .unwrap(),
-    );
-    let lin_out = solve::Linear::new(
-        &v.contact_kin(&s.output, -Vector3::x() * w_out, 0.0, tilt)
-            .unwrap(),
-        &v.contact_kin(&s.output, Vector3::zeros(), 1.0, tilt)
-            .unwrap(),
-    );
+    // The per-tilt kinematics at unit disc and roller speeds, superposed.
+    let lin_in = solve::Linear::new(&s.input.kin_disc, w_in, &s.input.kin_roller);
+    let lin_out = solve::Linear::new(&s.output.kin_disc, w_out, &s.output.kin_roller);
     for (lin, k) in [(lin_in, st.input), (lin_out, st.output)] {
         let (u, du, dv, spin) = lin.at(w_r);
         let scale = k.rolling_speed.abs();
@@ -477,4 +468,98 @@ fn literature_half_toroidal_is_more_efficient_than_full_toroidal() {
     };
     let (eh, ef) = (peak(&ht), peak(&ft));
     assert!(eh > ef + 0.01, "HT {eh} FT {ef}");
+}
+
+#[test]
+fn warm_started_balance_gives_the_cold_solution() {
+    // Each solve starts from the previous root (solve::balance_warm); the
+    // acceptance test |g| ≤ 1e-12 × the contacts' torque scale is the same
+    // as the cold solve's, so both roots leave the roller torque at that
+    // level and the outputs agree to ~1e-12 of their size, plus the rheology
+    // integrator's adaptive-refinement ripple between two nearby roots
+    // (≤ 7e-11 of the throughput, power_balance_to_round_off). Bound 1e-9.
+    // A ramp of creep, a tilt step, a load step, a reversal of the power flow.
+    let warm = standard();
+    let mut seq = Vec::new();
+    for i in 0..6 {
+        seq.push((0.004 + 0.002 * f64::from(i), 0.3, 20e3));
+    }
+    seq.extend([
+        (0.012, 0.25, 20e3),
+        (0.012, 0.25, 15e3),
+        (-0.01, 0.25, 15e3),
+    ]);
+    let (mut warm_iters, mut cold_iters) = (0, 0);
+    for (creep, tilt, load) in seq {
+        let p = point(&warm, 300.0, creep, tilt, load);
+        let a = warm.evaluate(&p).unwrap();
+        let cold = warm.clone();
+        *cold.hint.lock().unwrap() = None;
+        let b = cold.evaluate(&p).unwrap();
+        warm_iters += a.iterations;
+        cold_iters += b.iterations;
+        for (name, x, y) in [
+            ("torque_in", a.torque_in, b.torque_in),
+            ("torque_out", a.torque_out, b.torque_out),
+            ("power_loss", a.power_loss, b.power_loss),
+            ("side force", a.roller_side_force, b.roller_side_force),
+        ] {
+            assert!(
+                (x - y).abs() <= 1e-9 * y.abs(),
+                "creep {creep} tilt {tilt} load {load}: {name} warm {x} cold {y}"
+            );
+        }
+        let scale = a.power_in.abs().max(a.power_out.abs());
+        assert!(a.power_balance_residual.abs() <= 1e-10 * scale, "{a:?}");
+    }
+    assert!(warm_iters < cold_iters, "{warm_iters} vs {cold_iters}");
+}
+
+#[test]
+fn thermal_option_off_changes_nothing_and_on_heats_both_contacts() {
+    // Santotrac 50 (a report fluid: its film and temperature coefficients
+    // come with it), clamped to its data envelope.
+    let cavity = Cavity::half_toroidal(R0, 1.625 * R0, theta0(), R22, 2).unwrap();
+    let steel = DiscMaterial::REPORT_STEEL;
+    let fluid = || Fluid::santotrac_50(traction_contact::EnvelopeRule::Clamp).unwrap();
+    let build = |thermal| {
+        let o = Options {
+            thermal,
+            ..Options::default()
+        };
+        ToroidalVariator::new(cavity, steel, steel, fluid(), o).unwrap()
+    };
+    let hot = build(Some(traction_contact::Thermal::default()));
+    for (creep, tilt) in [(0.01, 0.0), (0.02, 0.3)] {
+        // Off: isothermal, bit for bit the variator of the default options
+        // (both solved cold).
+        let iso = build(None);
+        let p = point(&iso, 300.0, creep, tilt, 20e3);
+        let a = iso.evaluate(&p).unwrap();
+        let b = ToroidalVariator::new(cavity, steel, steel, fluid(), Options::default())
+            .unwrap()
+            .evaluate(&p)
+            .unwrap();
+        assert_eq!(a, b);
+        assert_eq!(a.input.evaluation.temperature_rise, 0.0);
+        assert_eq!(a.output.evaluation.temperature_rise, 0.0);
+        // On: both films heat up, the traction and loss change, and the power
+        // balance is the same identity (bound as power_balance_to_round_off).
+        let h = hot.evaluate(&p).unwrap();
+        for c in [&h.input, &h.output] {
+            let dt = c.evaluation.temperature_rise;
+            assert!(dt > 0.0 && dt < 500.0, "creep {creep} tilt {tilt}: ΔT {dt}");
+        }
+        assert_ne!(h.power_loss, a.power_loss);
+        let scale = h.power_in.abs().max(h.power_out.abs());
+        let bal = balance(&h, &p);
+        assert!(
+            bal.abs() <= 1e-8 * scale,
+            "creep {creep} tilt {tilt}: {bal} W"
+        );
+        assert!(
+            (bal - 2.0 * h.roller_speed * h.roller_torque_residual).abs() <= 1e-12 * scale,
+            "{h:?}"
+        );
+    }
 }
