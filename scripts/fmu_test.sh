@@ -5,7 +5,8 @@
 # instances), ecospy `ecos simulate`; then runs the win64 DLL under Wine with a
 # Windows FMI 2.0 master (fmu/tests/win/master.c, MinGW-w64) and compares every
 # output with the same master on linux64 to 1e-12 of the output's scale; and the
-# Rust example examples/fmu_import.rs loads it with the `fmi` crate.
+# Rust examples examples/fmu_import.rs and variator_fmu_import.rs load the two FMUs with
+# the `fmi` crate.
 # Needs the tools of scripts/fmu_setup.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,7 +19,10 @@ cargo run --locked -q -p traction-cli -- fmu build --out "$FMU"
 # The Rust example: the FMU loaded and stepped with the `fmi` crate.
 cargo run --locked -q -p traction-examples --example fmu_import -- "$FMU"
 TRACTION_FMU="$FMU" "$VENV/bin/python" -m pytest -q -p no:cacheprovider fmu/python
-V="$OUT/ToroidalVariator.fmu"; cargo run --locked -q -p traction-cli -- fmu build --model variator --out "$V" && TRACTION_VARIATOR_FMU="$V" "$VENV/bin/python" -m pytest -q -p no:cacheprovider variator-fmu/python
+V="$OUT/ToroidalVariator.fmu"
+cargo run --locked -q -p traction-cli -- fmu build --model variator --out "$V"
+cargo run --locked -q -p traction-examples --example variator_fmu_import -- "$V"
+TRACTION_VARIATOR_FMU="$V" "$VENV/bin/python" -m pytest -q -p no:cacheprovider variator-fmu/python
 
 echo "== win64: TractionContact.dll under Wine against linux64"
 start=$(date +%s)
