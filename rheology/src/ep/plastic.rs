@@ -59,7 +59,7 @@ impl Strip {
     /// and Zy·X·dX/ds = w·X·ny with w = L·dX/ds = (3/2)c²cos²s; the two
     /// midpoint stages share their node quantities.
     #[inline(always)]
-    fn rk4(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+    fn rk4<const ISO: bool>(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
         let c = self.c;
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
@@ -74,12 +74,12 @@ impl Strip {
         // Anisotropic stiffness: tan s at the three nodes (capped, see
         // `theta_rate`).
         let tan = |sn: f64, cs: f64| sn / cs.max(CS_MIN);
-        let (t0, tm, t1) = if self.gy != 1.0 {
+        let (t0, tm, t1) = if !self.iso::<ISO>() {
             (tan(p.sn, p.cs), tan(sm, cm), tan(s1, c1))
         } else {
             (0.0, 0.0, 0.0)
         };
-        let om = |vy: f64, t: f64, nx: f64, ny: f64| self.flow_rate(vy, av, t, nx, ny);
+        let om = |vy: f64, t: f64, nx: f64, ny: f64| self.flow_rate::<ISO>(vy, av, t, nx, ny);
         let hh = 0.5 * h;
         // Stage 1 at s0.
         let (n1x, n1y) = (p.nx, p.ny);
@@ -169,11 +169,11 @@ impl Strip {
     /// largest at an end (vy is linear in X), the rotation rate
     /// α' = a·q2·c·cos s/|v|² largest where |vy| is smallest.
     #[inline]
-    fn rates(&self, sn0: f64, cs0: f64, sn1: f64, cs1: f64, h: f64) -> (f64, f64) {
+    fn rates<const ISO: bool>(&self, sn0: f64, cs0: f64, sn1: f64, cs1: f64, h: f64) -> (f64, f64) {
         let (vy0, vy1) = (self.vy(self.c * sn0), self.vy(self.c * sn1));
         let a2 = self.a * self.a;
         let mut kh = (2.0 / 3.0) * (a2 + vy0.abs().max(vy1.abs()).powi(2)).sqrt() * h;
-        if self.gy != 1.0 {
+        if !self.iso::<ISO>() {
             // The λ·t·G·n part of `theta_rate` relaxes θ too: bound its rate
             // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s) (tan s largest at s1).
             let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
@@ -204,7 +204,7 @@ impl Strip {
     /// or equal sub-steps where κ·h exceeds the RK4 stability margin or the
     /// slip direction turns by more than `a_h` within the step (beyond
     /// MAX_SUB stability sub-steps: the quasi-steady direction).
-    fn advance(
+    fn advance<const ISO: bool>(
         &self,
         p: &PState,
         h: f64,
@@ -215,9 +215,9 @@ impl Strip {
     ) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
-        let (kh, ah) = self.rates(p.sn, p.cs, s1, c1, h);
+        let (kh, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1, h);
         if kh.is_nan() || (kh <= KAPPA_H && ah <= a_h) {
-            return self.rk4(p, h, c2, s2);
+            return self.rk4::<ISO>(p, h, c2, s2);
         }
         let mk = (kh / KAPPA_H).ceil();
         let m = mk.max((ah / a_h).ceil().min(MAX_SUB_TURN));
@@ -228,7 +228,7 @@ impl Strip {
         // MAX_SUB gave 20·tol at tol = 1e-3 (gy = 8.7, J ≈ 10), at
         // MAX_SUB·f still 1.65·tol at 1e-4 (gy = 0.1, k = 0.05, J ≈ 300); at
         // 4·MAX_SUB·f ≤ 0.62·tol on 1500 random cases (+0–20 % time).
-        let max_sub = if self.gy == 1.0 {
+        let max_sub = if self.iso::<ISO>() {
             MAX_SUB as f64
         } else {
             4.0 * MAX_SUB as f64 * (1.0 + (self.gy - 1.0).abs() / self.gy.min(1.0))
@@ -243,7 +243,7 @@ impl Strip {
             let (_, c2s, s2s) = *cache;
             let mut q = *p;
             for _ in 0..m {
-                q = self.rk4(&q, hs, c2s, s2s);
+                q = self.rk4::<ISO>(&q, hs, c2s, s2s);
             }
             return q;
         }
@@ -277,7 +277,7 @@ impl Strip {
 
     /// Plastic flow from yield at X = c·sn (with unit direction n) on.
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn plastic(
+    pub(super) fn plastic<const ISO: bool>(
         &self,
         sn: f64,
         cs: f64,
@@ -303,7 +303,7 @@ impl Strip {
         let mut nsteps = steps(s_step_smooth);
         let mut h = span / nsteps as f64;
         let ok = |h: f64| {
-            let (kh, ah) = self.rates(sn, cs, 1.0, 0.0, h);
+            let (kh, ah) = self.rates::<ISO>(sn, cs, 1.0, 0.0, h);
             kh * (1.0 + KAPPA_H_SLACK) <= KAPPA_H && ah <= a_h
         };
         let mut nonstiff = ok(h);
@@ -343,7 +343,7 @@ impl Strip {
                     h
                 };
                 let (s1, c1) = (s_cur + hv).sin_cos();
-                let (_, ah) = self.rates(p.sn, p.cs, s1, c1.max(0.0), hv);
+                let (_, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1.max(0.0), hv);
                 if ah > a_h && i <= MAX_STEPS {
                     hv *= (a_h / ah).max(1.0 / MAX_SUB_TURN);
                 }
@@ -357,10 +357,10 @@ impl Strip {
                 (hv, c2v, s2v, hv >= rem)
             };
             let mut q = if nonstiff {
-                self.rk4(&p, h, c2, s2)
+                self.rk4::<ISO>(&p, h, c2, s2)
             } else {
                 s_cur += h;
-                self.advance(&p, h, c2, s2, a_h, &mut cache)
+                self.advance::<ISO>(&p, h, c2, s2, a_h, &mut cache)
             };
             if last {
                 q.sn = 1.0;
@@ -369,7 +369,7 @@ impl Strip {
             if allow_unload && q.cs > OUTLET_CS {
                 let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
                 if g1 < 0.0 {
-                    let best = self.locate_unload(&p, h, g1, a_h, &mut cache);
+                    let best = self.locate_unload::<ISO>(&p, h, g1, a_h, &mut cache);
                     *acc += best.acc;
                     let l = 1.5 * self.c * best.cs;
                     rec(Event::Plastic {
@@ -399,7 +399,7 @@ impl Strip {
     /// `p` (g ≥ 0 at its start, g = `g1` < 0 at its end): regula falsi
     /// (Illinois) on the step length, at most [`UNLOAD_ITERATIONS`] steps or
     /// until |g| < [`UNLOAD_G_TOL`].
-    fn locate_unload(
+    fn locate_unload<const ISO: bool>(
         &self,
         p: &PState,
         h: f64,
@@ -418,7 +418,7 @@ impl Strip {
                 0.5 * (tl + th)
             };
             let (st, ct) = (0.5 * t).sin_cos();
-            let r = self.advance(p, t, ct, st, a_h, cache);
+            let r = self.advance::<ISO>(p, t, ct, st, a_h, cache);
             let gr = self.g(r.sn, r.cs, r.nx, r.ny);
             best = r;
             if gr.abs() < UNLOAD_G_TOL {
