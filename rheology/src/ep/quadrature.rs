@@ -157,9 +157,12 @@ const POLE_GRADING: f64 = 8.0;
 /// the outermost panel is wider and refined by the adaptive rule).
 const MAX_BREAKS: usize = 64;
 
-/// Initial panel edges in φ (Y = sin φ): −π/2, 0, π/2, or, when the spin
-/// pole's strip Y_p = J1/(√k·J3) (where the slip's X component a = a0 − J3·Y
-/// vanishes) lies inside the contact, edges graded geometrically towards it.
+/// Initial panel edges in φ (Y = sin φ): graded geometrically towards the
+/// spin pole's strip Y_p = J1/(√k·J3), where the slip's X component
+/// a = a0 − J3·Y vanishes (towards the nearer edge of the contact when Y_p
+/// lies outside it, so that the edges move continuously as the pole leaves
+/// the contact: second differences along J1 across |Y_p| = 1 at tol = 1e-3
+/// are ≤ 0.007·tol, against 0.027·tol when switching to fixed edges there).
 ///
 /// Near that strip the flow pattern changes within |ΔY| ~ 1/|J3|. Starting
 /// from the two halves, a coarse panel whose 4- and 8-point values agree by
@@ -170,12 +173,15 @@ const MAX_BREAKS: usize = 64;
 /// where the integrand is smooth and the change far below tol.
 fn initial_breaks(sc: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
     let yp = sc.a0 / sc.j3;
-    // Outside the contact, or NaN (J3 = 0 is the closed form).
-    if yp.is_nan() || yp.abs() >= 1.0 {
+    // J1 = J3 = 0 (the closed form unless gy ≠ 1): the two halves.
+    if yp.is_nan() {
         out[..3].copy_from_slice(&[-FRAC_PI_2, 0.0, FRAC_PI_2]);
         return 3;
     }
-    let pp = yp.asin();
+    // With the pole at (or beyond) an edge and w0 wider than the contact
+    // (small |J3|) this is one panel from edge to edge, whose first
+    // refinement is the two halves (an empty panel at the edge is skipped).
+    let pp = yp.clamp(-1.0, 1.0).asin();
     let w0 = POLE_GRADING / sc.j3.abs();
     let side = MAX_BREAKS / 2 - 2;
     // Below the pole (filled from the pole outwards, then reversed).
