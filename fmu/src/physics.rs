@@ -192,6 +192,16 @@ pub struct Parameters {
     pub tolerance: f64,
     /// Interpolation map of the J+T model (traction-contact `Options::map`).
     pub map: bool,
+    /// Thermal contact (traction-contact `Options::thermal`).
+    pub thermal: bool,
+    /// Film thickness h of the thermal model for the user fluid, m.
+    pub film_thickness: f64,
+    /// Thermal conductivity k_f of the user fluid, W/(m·K).
+    pub fluid_conductivity: f64,
+    /// Temperature coefficient β_μ of the user fluid's μ, 1/K.
+    pub mu_temperature_coefficient: f64,
+    /// Temperature coefficient β_m of the user fluid's m, 1/K.
+    pub m_temperature_coefficient: f64,
 }
 
 /// One operating state of the contact (SI units).
@@ -241,6 +251,9 @@ pub struct Outputs {
     pub regime: Option<Regime>,
     /// A report fluid's correlation was used outside its data envelope.
     pub outside_envelope: bool,
+    /// Mean film temperature rise over the inlet (thermal model), K; 0
+    /// without it.
+    pub temperature_rise: f64,
 }
 
 /// Why the contact cannot be built or evaluated. Each message names the
@@ -312,6 +325,44 @@ pub fn kalker_combined(e1: f64, nu1: f64, e2: f64, nu2: f64) -> DiscMaterial {
         youngs_modulus: 2.0 * g * (1.0 + nu),
         poisson_ratio: nu,
     }
+}
+
+/// The thermal model of the parameters: the report fluids' own property set
+/// (traction-fluids `ThermalProperties`), or the user fluid's film thickness,
+/// conductivity and temperature coefficients, checked here against the
+/// ranges of traction-contact's `Thermal::validate` so that the error names
+/// the FMU parameter.
+fn thermal(p: &Parameters) -> Result<Option<traction_contact::Thermal>, PhysicsError> {
+    if !p.thermal {
+        return Ok(None);
+    }
+    Ok(Some(match p.fluid {
+        Fluid::User => {
+            let (h, k) = (p.film_thickness, p.fluid_conductivity);
+            check("film_thickness", h, h > 0.0 && h <= 1e-3, "in (0, 1e-3] m")?;
+            check(
+                "fluid_conductivity",
+                k,
+                k > 0.0 && k <= 1e4,
+                "in (0, 1e4] W/(m K)",
+            )?;
+            let max = traction_contact::thermal::MAX_TEMPERATURE_COEFFICIENT;
+            for (name, b) in [
+                ("mu_temperature_coefficient", p.mu_temperature_coefficient),
+                ("m_temperature_coefficient", p.m_temperature_coefficient),
+            ] {
+                check(name, b, b.abs() <= max, "in [-1, 1] 1/K")?;
+            }
+            traction_contact::Thermal {
+                film: traction_contact::Film::Thickness(h),
+                fluid_conductivity: Some(k),
+                mu_coefficient: Some(p.mu_temperature_coefficient),
+                slope_coefficient: Some(p.m_temperature_coefficient),
+                ..traction_contact::Thermal::default()
+            }
+        }
+        Fluid::Santotrac50 | Fluid::Tdf88 => traction_contact::Thermal::default(),
+    }))
 }
 
 /// A parameter that must be > 0 and may be `+∞` (NaN refused).
@@ -451,6 +502,7 @@ impl Contact {
             compliance,
             rolling_speed_floor: p.u_reg,
             map: p.map,
+            thermal: thermal(p)?,
             ..Options::default()
         };
         let contact = TractionContact::new(&b1, &b2, fluid, options)?;
@@ -514,6 +566,7 @@ impl Contact {
             j: [r.j1, r.j2, r.j3, r.j4, r.j5, r.j6, r.j7],
             regime: Some(regime),
             outside_envelope: r.outside_envelope.any(),
+            temperature_rise: r.temperature_rise,
         })
     }
 }
@@ -573,6 +626,11 @@ mod tests {
             u_reg: 0.01,
             tolerance: 1e-4,
             map: true,
+            thermal: false,
+            film_thickness: 0.5e-6,
+            fluid_conductivity: 0.11,
+            mu_temperature_coefficient: 0.0025,
+            m_temperature_coefficient: 0.0,
         }
     }
 
