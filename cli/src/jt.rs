@@ -6,8 +6,12 @@
 //! default 1). Output: the input columns followed by `J4,J5,J6,J7`.
 //! `--map` evaluates the elastic/plastic rows through one interpolation map
 //! per (k, dX, gy) (traction-rheology `map::Map`): for large batches at few
-//! geometries. Rows (or, with `--map`, the groups of one map) are evaluated
-//! in parallel on all cores.
+//! geometries. A group whose map would compute more than
+//! [`MAP_NODES_PER_ROW`] node evaluations per row (scattered points, each
+//! opening new cells) is evaluated directly instead, so `--map` costs at most
+//! a few direct evaluations per row on any input (docs/decisions/0043). Rows
+//! (or, with `--map`, the groups of one map) are evaluated in parallel on all
+//! cores.
 
 use std::collections::HashMap;
 
@@ -17,6 +21,14 @@ use traction_rheology::map::Map;
 use traction_rheology::{Accuracy, Inputs, Model, Outputs, RheologyError, evaluate};
 
 use crate::error::CliError;
+
+/// `--map`: node evaluations (at tol/10, plus one check per cell) a group's
+/// map may spend per row of the group; beyond it the group is evaluated
+/// directly. A node costs 1.4–7 direct evaluations at tol (bench set,
+/// instructions), so a group that exceeds the budget costs at most
+/// 1 + 0.5·7 ≈ 4.5 direct evaluations per row, and one within it ≥ 2 rows
+/// per node, where the map is about as fast as direct evaluation or faster.
+pub const MAP_NODES_PER_ROW: f64 = 0.5;
 use crate::table::{Table, TableWriter, fmt_f64, output_headers};
 
 /// Constitutive model selected on the command line.
@@ -48,7 +60,8 @@ pub struct JtArgs {
     /// Elastic/plastic model only: interpolate in one lazily built map per
     /// (k, dX, gy), each cell checked against direct evaluation to tol/4
     /// (tol in 1e-4 ..= 1e-2). Pays off for thousands of rows at few
-    /// geometries; slower for small or scattered batches.
+    /// geometries; a group whose map would need more than 0.5 node
+    /// evaluations per row is evaluated directly instead.
     #[arg(long)]
     pub map: bool,
 }
@@ -108,7 +121,23 @@ pub fn run(args: JtArgs) -> Result<(), CliError> {
             .map(|g| {
                 let first = &rows[g[0]].0;
                 match Map::new(first.k, first.dx, first.gy, acc) {
-                    Ok(mut map) => g.iter().map(|&r| (r, map.evaluate(&rows[r].0))).collect(),
+                    Ok(mut map) => {
+                        // The rows in input order: whether the group exceeds
+                        // the budget depends on its rows alone (not on threads).
+                        let budget = MAP_NODES_PER_ROW * g.len() as f64;
+                        let mut out = Vec::with_capacity(g.len());
+                        for &r in g {
+                            out.push((r, map.evaluate(&rows[r].0)));
+                            let s = map.stats();
+                            if (s.nodes_computed + s.cells_checked) as f64 > budget {
+                                return g
+                                    .par_iter()
+                                    .map(|&r| (r, evaluate(&rows[r].0, rows[r].1, acc)))
+                                    .collect();
+                            }
+                        }
+                        out
+                    }
                     Err(e) => g.iter().map(|&r| (r, Err(e.clone()))).collect(),
                 }
             })

@@ -96,7 +96,8 @@ fn stiffness_ratio_column() {
 fn map_option_agrees_with_direct_evaluation() {
     // --map: 120 rows of a slip sweep at two spins and two k's; every row
     // within tol = 1e-3 of the direct evaluation at 1e-5 (the map's contract,
-    // traction-rheology tests/map.rs); --map with another model or a tol
+    // traction-rheology tests/map.rs; groups this small fall back to direct
+    // evaluation, see the next test); --map with another model or a tol
     // outside [1e-4, 1e-2] is a usage error.
     let mut input = String::from("k,J1,J2,J3\n");
     for n in 0..30 {
@@ -129,4 +130,59 @@ fn map_option_agrees_with_direct_evaluation() {
     assert!(!ok && err.contains("--map"), "{err}");
     let (ok, _, err) = run(&["jt", "--map", "--tol", "1e-6"], &input);
     assert!(!ok && err.contains("--map"), "{err}");
+}
+
+#[test]
+fn map_option_is_used_only_where_it_pays_off() {
+    let col = |out: &str| -> Vec<[f64; 3]> {
+        out.lines()
+            .skip(1)
+            .map(|l| {
+                let c: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+                [c[4], c[5], c[6]]
+            })
+            .collect()
+    };
+    // A dense group: 600 rows of a slip sweep within 2 % of one state at
+    // k = 1 need one or two cells (≤ 130 node evaluations, within the budget
+    // of 0.5 per row): interpolated (some row differs from the direct value),
+    // every row within tol = 1e-3 of the direct evaluation at 1e-5.
+    let mut dense = String::from("k,J1,J2,J3\n");
+    for n in 0..600 {
+        dense += &format!("1,{},0.3,2\n", 1.5 + 5e-5 * f64::from(n));
+    }
+    let (ok, mapped, err) = run(&["jt", "--map", "--tol", "1e-3"], &dense);
+    assert!(ok, "{err}");
+    let (ok, direct, err) = run(&["jt", "--tol", "1e-3"], &dense);
+    assert!(ok, "{err}");
+    let (ok, fine, err) = run(&["jt", "--tol", "1e-5"], &dense);
+    assert!(ok, "{err}");
+    let (m, d, f) = (col(&mapped), col(&direct), col(&fine));
+    assert!(
+        m.iter().zip(&d).any(|(a, b)| a != b),
+        "the map was not used"
+    );
+    for (a, b) in m.iter().zip(&f) {
+        for i in 0..3 {
+            assert!((a[i] - b[i]).abs() <= 1e-3, "{a:?} vs {b:?}");
+        }
+    }
+    // A scattered group: 40 rows over |J1|, |J2| ≤ 5, J3 ∈ [5, 26] at k = 2
+    // open a new cell (64 nodes) nearly every row, far beyond the budget: the
+    // group is evaluated directly, bit-identical to the run without --map.
+    let mut scattered = String::from("k,J1,J2,J3\n");
+    for n in 0..40 {
+        let t = f64::from(n);
+        scattered += &format!(
+            "2,{},{},{}\n",
+            5.0 * (1.7 * t).sin(),
+            5.0 * (2.3 * t).cos(),
+            15.5 + 10.5 * (0.9 * t).sin()
+        );
+    }
+    let (ok, mapped, err) = run(&["jt", "--map", "--tol", "1e-3"], &scattered);
+    assert!(ok, "{err}");
+    let (ok, direct, err) = run(&["jt", "--tol", "1e-3"], &scattered);
+    assert!(ok, "{err}");
+    assert_eq!(mapped, direct);
 }

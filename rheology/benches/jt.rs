@@ -23,13 +23,32 @@ fn benches(c: &mut Criterion) {
             Inputs::new(5.0, 0.0, 3.368, 25.816).unwrap(),
         ),
     ];
+    // The bench set of the direct solver (the same cases as `cargo xtask
+    // prof CASE`, which counts instructions): moderate spin, the App. VI high
+    // spin trace, near the spin pole at small k, large k, and three
+    // intermediate spins.
+    let set = [
+        ("m moderate k=1 J=(1.5,0.3,2)", 1.0, 1.5, 0.3, 2.0),
+        ("h high-spin k=5 J=(0,3.37,25.8)", 5.0, 0.0, 3.368, 25.816),
+        ("p pole k=0.2 J=(0.11,0.08,0.70)", 0.2, 0.11, 0.08, 0.70),
+        ("s k=20 J=(0.5,2,40)", 20.0, 0.5, 2.0, 40.0),
+        ("a k=0.5 J=(2,-1,10)", 0.5, 2.0, -1.0, 10.0),
+        ("b k=2 J=(-1,3,15)", 2.0, -1.0, 3.0, 15.0),
+        ("c k=1 J=(0.2,0.1,5)", 1.0, 0.2, 0.1, 5.0),
+    ];
     let mut g = c.benchmark_group("elastic_plastic");
     g.sample_size(10);
-    for (name, inp) in &cases {
-        for tol in [1e-2, 1e-3, 1e-4, 1e-5] {
+    for &(name, k, j1, j2, j3) in &set {
+        let inp = Inputs::new(k, j1, j2, j3).unwrap();
+        let tols: &[f64] = if name.starts_with('m') || name.starts_with('h') {
+            &[1e-2, 1e-3, 1e-4, 1e-5]
+        } else {
+            &[1e-3, 1e-4]
+        };
+        for &tol in tols {
             let a = Accuracy::new(tol).unwrap();
             g.bench_function(format!("{name} tol={tol:.0e}"), |b| {
-                b.iter(|| evaluate(black_box(inp), Model::ElasticPlastic, a).unwrap())
+                b.iter(|| evaluate(black_box(&inp), Model::ElasticPlastic, a).unwrap())
             });
         }
     }

@@ -96,6 +96,12 @@ fn accuracy_parameter_is_met() {
         (1.0, 3.0, 0.0, 10.0),
         (0.05, 1.0, 1.0, 10.0),
         (20.0, 2.0, 1.0, 40.0),
+        // High spin with the spin pole's strip off the centre line: with the
+        // initial panels at Y = −1, 0, 1 only, a coarse panel was accepted
+        // unresolved (error 1.77·tol at 1e-4, 0.93·tol and 0.90·tol at 1e-3).
+        (0.5, 1.01, -2.508, 7.798),
+        (1.0, 1.206, 0.0165, 16.47),
+        (1.0, -1.26, -3.40, 25.57),
     ];
     for &(k, j1, j2, j3) in &cases {
         let i = Inputs::new(k, j1, j2, j3).unwrap();

@@ -12,7 +12,7 @@ mod prof;
 
 const USAGE: &str = "usage: cargo xtask COMMAND ARGS
 commands:
-  prof [CASE [TOL [REPS]]]        callgrind driver: CASE m (moderate) or h (high spin),
+  prof [CASE [TOL [REPS]]]        callgrind driver: CASE m h p s a b c (bench set, prof.rs),
                                   TOL accuracy (default 1e-3), REPS evaluations (default 1)
   map-check K TOL N RLOG [DX GY]  rheology map against evaluate at TOL/100 on N random
                                   points, |J| log-uniform in [0.1, 10^(RLOG-1)]";

@@ -174,15 +174,23 @@ impl Strip {
         } else {
             sn / cs.max(CS_MIN)
         };
-        self.flow_rate(k * self.vy(self.c * sn), k * self.a, t, nx, ny)
+        self.flow_rate::<false>(k * self.vy(self.c * sn), k * self.a, t, nx, ny)
+    }
+
+    /// Whether the stiffness is isotropic (gy = 1): `ISO = true` asserts it
+    /// at compile time (the isotropic instantiation of the plastic stepping,
+    /// chosen once per strip), `false` tests it at run time.
+    #[inline(always)]
+    pub(super) fn iso<const ISO: bool>(&self) -> bool {
+        ISO || self.gy == 1.0
     }
 
     /// `theta_rate` from the scaled rates: vy_k = (2/3)·vy, a_k = (2/3)·a and
     /// t = (2/3)·(3/2)·tan s = tan s (capped; unused for gy = 1).
     #[inline(always)]
-    fn flow_rate(&self, vy_k: f64, a_k: f64, t: f64, nx: f64, ny: f64) -> f64 {
+    fn flow_rate<const ISO: bool>(&self, vy_k: f64, a_k: f64, t: f64, nx: f64, ny: f64) -> f64 {
         let base = vy_k * nx - a_k * ny;
-        if self.gy == 1.0 {
+        if self.iso::<ISO>() {
             base
         } else {
             base - (self.gy - 1.0) * nx * ny * (a_k * nx + vy_k * ny + t)
@@ -230,15 +238,15 @@ impl Strip {
             }
             let sn = (xy / c).clamp(-1.0, 1.0);
             let cs = (1.0 - sn * sn).max(0.0).sqrt();
-            match self.plastic(
-                sn,
-                cs,
-                (z.0 / m, z.1 / m),
-                &mut acc,
-                switches < MAX_SWITCH,
-                (s_step, s_step_smooth),
-                rec,
-            ) {
+            let n = (z.0 / m, z.1 / m);
+            let steps = (s_step, s_step_smooth);
+            let allow_unload = switches < MAX_SWITCH;
+            let end = if self.gy == 1.0 {
+                self.plastic::<true>(sn, cs, n, &mut acc, allow_unload, steps, rec)
+            } else {
+                self.plastic::<false>(sn, cs, n, &mut acc, allow_unload, steps, rec)
+            };
+            match end {
                 PlasticEnd::Outlet => break,
                 PlasticEnd::Unload { x, z } => {
                     x0 = x;

@@ -7,6 +7,46 @@ use std::f64::consts::FRAC_PI_2;
 
 use super::{CS_MIN, Event, PState, PlasticEnd, Strip, StripSums};
 
+/// (sin x, cos x) of a (half) step angle: Taylor polynomials for |x| ≤ 1/2,
+/// whose truncation error (< x¹⁷/17! ≈ 2e-20 for sin, x¹⁸/18! for cos) is
+/// far below the rounding of f64, so the result agrees with the library's
+/// sin/cos to within an ulp or two at a third of the cost; larger angles
+/// use the library.
+#[inline]
+pub(super) fn sin_cos_small(x: f64) -> (f64, f64) {
+    if x.abs() > 0.5 {
+        return x.sin_cos();
+    }
+    let x2 = x * x;
+    // Horner in x²: sin x = x·Σ (−x²)^i/(2i+1)!, cos x = Σ (−x²)^i/(2i)!.
+    let s = x
+        * (1.0
+            - x2 / 6.0
+                * (1.0
+                    - x2 / 20.0
+                        * (1.0
+                            - x2 / 42.0
+                                * (1.0
+                                    - x2 / 72.0
+                                        * (1.0
+                                            - x2 / 110.0
+                                                * (1.0 - x2 / 156.0 * (1.0 - x2 / 210.0)))))));
+    let c = 1.0
+        - x2 / 2.0
+            * (1.0
+                - x2 / 12.0
+                    * (1.0
+                        - x2 / 30.0
+                            * (1.0
+                                - x2 / 56.0
+                                    * (1.0
+                                        - x2 / 90.0
+                                            * (1.0
+                                                - x2 / 132.0
+                                                    * (1.0 - x2 / 182.0 * (1.0 - x2 / 240.0)))))));
+    (s, c)
+}
+
 /// Largest number of RK4 sub-steps per step before the quasi-steady branch.
 const MAX_SUB: usize = 16;
 /// Largest turn of the slip direction α per step, as a multiple of the
@@ -59,7 +99,7 @@ impl Strip {
     /// and Zy·X·dX/ds = w·X·ny with w = L·dX/ds = (3/2)c²cos²s; the two
     /// midpoint stages share their node quantities.
     #[inline(always)]
-    fn rk4(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+    fn rk4<const ISO: bool>(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
         let c = self.c;
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
@@ -74,12 +114,12 @@ impl Strip {
         // Anisotropic stiffness: tan s at the three nodes (capped, see
         // `theta_rate`).
         let tan = |sn: f64, cs: f64| sn / cs.max(CS_MIN);
-        let (t0, tm, t1) = if self.gy != 1.0 {
+        let (t0, tm, t1) = if !self.iso::<ISO>() {
             (tan(p.sn, p.cs), tan(sm, cm), tan(s1, c1))
         } else {
             (0.0, 0.0, 0.0)
         };
-        let om = |vy: f64, t: f64, nx: f64, ny: f64| self.flow_rate(vy, av, t, nx, ny);
+        let om = |vy: f64, t: f64, nx: f64, ny: f64| self.flow_rate::<ISO>(vy, av, t, nx, ny);
         let hh = 0.5 * h;
         // Stage 1 at s0.
         let (n1x, n1y) = (p.nx, p.ny);
@@ -169,11 +209,11 @@ impl Strip {
     /// largest at an end (vy is linear in X), the rotation rate
     /// α' = a·q2·c·cos s/|v|² largest where |vy| is smallest.
     #[inline]
-    fn rates(&self, sn0: f64, cs0: f64, sn1: f64, cs1: f64, h: f64) -> (f64, f64) {
+    fn rates<const ISO: bool>(&self, sn0: f64, cs0: f64, sn1: f64, cs1: f64, h: f64) -> (f64, f64) {
         let (vy0, vy1) = (self.vy(self.c * sn0), self.vy(self.c * sn1));
         let a2 = self.a * self.a;
         let mut kh = (2.0 / 3.0) * (a2 + vy0.abs().max(vy1.abs()).powi(2)).sqrt() * h;
-        if self.gy != 1.0 {
+        if !self.iso::<ISO>() {
             // The λ·t·G·n part of `theta_rate` relaxes θ too: bound its rate
             // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s) (tan s largest at s1).
             let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
@@ -204,7 +244,7 @@ impl Strip {
     /// or equal sub-steps where κ·h exceeds the RK4 stability margin or the
     /// slip direction turns by more than `a_h` within the step (beyond
     /// MAX_SUB stability sub-steps: the quasi-steady direction).
-    fn advance(
+    fn advance<const ISO: bool>(
         &self,
         p: &PState,
         h: f64,
@@ -215,9 +255,9 @@ impl Strip {
     ) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
-        let (kh, ah) = self.rates(p.sn, p.cs, s1, c1, h);
+        let (kh, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1, h);
         if kh.is_nan() || (kh <= KAPPA_H && ah <= a_h) {
-            return self.rk4(p, h, c2, s2);
+            return self.rk4::<ISO>(p, h, c2, s2);
         }
         let mk = (kh / KAPPA_H).ceil();
         let m = mk.max((ah / a_h).ceil().min(MAX_SUB_TURN));
@@ -228,7 +268,7 @@ impl Strip {
         // MAX_SUB gave 20·tol at tol = 1e-3 (gy = 8.7, J ≈ 10), at
         // MAX_SUB·f still 1.65·tol at 1e-4 (gy = 0.1, k = 0.05, J ≈ 300); at
         // 4·MAX_SUB·f ≤ 0.62·tol on 1500 random cases (+0–20 % time).
-        let max_sub = if self.gy == 1.0 {
+        let max_sub = if self.iso::<ISO>() {
             MAX_SUB as f64
         } else {
             4.0 * MAX_SUB as f64 * (1.0 + (self.gy - 1.0).abs() / self.gy.min(1.0))
@@ -237,13 +277,13 @@ impl Strip {
             let m = m as usize;
             let hs = h / m as f64;
             if cache.0 != hs {
-                let (s2s, c2s) = (0.5 * hs).sin_cos();
+                let (s2s, c2s) = sin_cos_small(0.5 * hs);
                 *cache = (hs, c2s, s2s);
             }
             let (_, c2s, s2s) = *cache;
             let mut q = *p;
             for _ in 0..m {
-                q = self.rk4(&q, hs, c2s, s2s);
+                q = self.rk4::<ISO>(&q, hs, c2s, s2s);
             }
             return q;
         }
@@ -277,7 +317,7 @@ impl Strip {
 
     /// Plastic flow from yield at X = c·sn (with unit direction n) on.
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn plastic(
+    pub(super) fn plastic<const ISO: bool>(
         &self,
         sn: f64,
         cs: f64,
@@ -303,7 +343,7 @@ impl Strip {
         let mut nsteps = steps(s_step_smooth);
         let mut h = span / nsteps as f64;
         let ok = |h: f64| {
-            let (kh, ah) = self.rates(sn, cs, 1.0, 0.0, h);
+            let (kh, ah) = self.rates::<ISO>(sn, cs, 1.0, 0.0, h);
             kh * (1.0 + KAPPA_H_SLACK) <= KAPPA_H && ah <= a_h
         };
         let mut nonstiff = ok(h);
@@ -312,7 +352,9 @@ impl Strip {
             h = span / nsteps as f64;
             nonstiff = ok(h);
         }
-        let (s2, c2) = (0.5 * h).sin_cos();
+        let (s2, c2) = sin_cos_small(0.5 * h);
+        // sin/cos of the whole step (double angle).
+        let sc_h = (2.0 * s2 * c2, (c2 - s2) * (c2 + s2));
         // (sub-step, cos, sin of half of it) of the last sub-divided step.
         let mut cache = (f64::NAN, 1.0, 0.0);
         let mut p = PState {
@@ -342,8 +384,14 @@ impl Strip {
                 } else {
                     h
                 };
-                let (s1, c1) = (s_cur + hv).sin_cos();
-                let (_, ah) = self.rates(p.sn, p.cs, s1, c1.max(0.0), hv);
+                // sin/cos of s_cur + hv (the outlet for the last step).
+                let (s1, c1) = if hv == rem {
+                    (1.0, 0.0)
+                } else {
+                    let (sh, ch) = if hv == h { sc_h } else { sin_cos_small(hv) };
+                    (p.sn * ch + p.cs * sh, p.cs * ch - p.sn * sh)
+                };
+                let (_, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1.max(0.0), hv);
                 if ah > a_h && i <= MAX_STEPS {
                     hv *= (a_h / ah).max(1.0 / MAX_SUB_TURN);
                 }
@@ -353,14 +401,18 @@ impl Strip {
                 if i < GRADED_STEPS {
                     hv = hv.min(h_first * f64::from(1u32 << (i - 1).min(30)));
                 }
-                let (s2v, c2v) = (0.5 * hv).sin_cos();
+                let (s2v, c2v) = if hv == h {
+                    (s2, c2)
+                } else {
+                    sin_cos_small(0.5 * hv)
+                };
                 (hv, c2v, s2v, hv >= rem)
             };
             let mut q = if nonstiff {
-                self.rk4(&p, h, c2, s2)
+                self.rk4::<ISO>(&p, h, c2, s2)
             } else {
                 s_cur += h;
-                self.advance(&p, h, c2, s2, a_h, &mut cache)
+                self.advance::<ISO>(&p, h, c2, s2, a_h, &mut cache)
             };
             if last {
                 q.sn = 1.0;
@@ -369,7 +421,7 @@ impl Strip {
             if allow_unload && q.cs > OUTLET_CS {
                 let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
                 if g1 < 0.0 {
-                    let best = self.locate_unload(&p, h, g1, a_h, &mut cache);
+                    let best = self.locate_unload::<ISO>(&p, h, g1, a_h, &mut cache);
                     *acc += best.acc;
                     let l = 1.5 * self.c * best.cs;
                     rec(Event::Plastic {
@@ -399,7 +451,7 @@ impl Strip {
     /// `p` (g ≥ 0 at its start, g = `g1` < 0 at its end): regula falsi
     /// (Illinois) on the step length, at most [`UNLOAD_ITERATIONS`] steps or
     /// until |g| < [`UNLOAD_G_TOL`].
-    fn locate_unload(
+    fn locate_unload<const ISO: bool>(
         &self,
         p: &PState,
         h: f64,
@@ -417,8 +469,8 @@ impl Strip {
             } else {
                 0.5 * (tl + th)
             };
-            let (st, ct) = (0.5 * t).sin_cos();
-            let r = self.advance(p, t, ct, st, a_h, cache);
+            let (st, ct) = sin_cos_small(0.5 * t);
+            let r = self.advance::<ISO>(p, t, ct, st, a_h, cache);
             let gr = self.g(r.sn, r.cs, r.nx, r.ny);
             best = r;
             if gr.abs() < UNLOAD_G_TOL {
