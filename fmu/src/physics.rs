@@ -258,9 +258,6 @@ pub enum PhysicsError {
         /// The valid range.
         valid: &'static str,
     },
-    /// The option is not available through the FMU.
-    #[error("{0} is not available in this FMU")]
-    NotYetAvailable(&'static str),
     /// traction-contact refused the contact or the state.
     #[error("{0}")]
     Contact(#[from] ContactError),
@@ -348,7 +345,7 @@ impl Contact {
     /// Validates the parameters and builds the traction-contact model.
     ///
     /// # Errors
-    /// A [`PhysicsError`] naming the first invalid parameter or unavailable option.
+    /// A [`PhysicsError`] naming the first invalid parameter.
     pub fn new(p: &Parameters) -> Result<Self, PhysicsError> {
         let b1 = Body::new(radius("rx1", p.rx1)?, radius("ry1", p.ry1)?, p.e1, p.nu1);
         let b2 = Body::new(radius("rx2", p.rx2)?, radius("ry2", p.ry2)?, p.e2, p.nu2);

@@ -146,7 +146,7 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
 
 #[test]
 fn random_steps_with_the_rheology_map() {
-    // rheology_map on (its default): inputs and parameters drawn from small
+    // rheology_map on (off by default): inputs and parameters drawn from small
     // pools (specials included), the same state machine and checks. The
     // states still hardly recur (8 values per variable), so nearly every
     // step with spin builds map cells (milliseconds each): 3000 steps.
