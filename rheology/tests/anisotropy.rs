@@ -152,11 +152,12 @@ fn large_j_with_anisotropy_meets_the_accuracy() {
     // the first and fifth case): ≤ tol at 1e-3 and 1e-4.
     // Also two cases where the RK4 sub-steps ended too early for gy ≠ 1 (the
     // κ bound overestimates the relaxation by up to gy or 1/gy, so the
-    // quasi-steady branch was used where the flow is not quasi-steady): 20·tol
-    // at 1e-3 (gy = 8.7, J ≈ 10) and 1.65·tol at 1e-4 (gy = 0.1, k = 0.05),
-    // and 60 pseudo-random cases: k 0.05 … 20, gy 0.1 … 10, |ΔX| ≤ 0.3,
-    // |J| up to 10³ (an offline scan of 1500 such cases to 10⁴: worst
-    // 0.46·tol at 1e-3, 0.62·tol at 1e-4).
+    // quasi-steady branch was used where the flow is not quasi-steady; their
+    // former errors are stated at the integrator's sub-step rule): gy = 8.7,
+    // J ≈ 10 at 1e-3 and gy = 0.1, k = 0.05 at 1e-4, and 60 pseudo-random
+    // cases: k 0.05 … 20, gy 0.1 … 10, |ΔX| ≤ 0.3, |J| up to 10³ (an offline
+    // scan of 1500 such cases to 10⁴: worst error/tol in the crate README,
+    // anisotropic stiffness).
     let mut cases = vec![
         (0.5, -224.45, -11.92, -147.61, -0.2, 3.0),
         (2.0, 120.0, 40.0, 300.0, 0.0, 0.3),
