@@ -1,7 +1,7 @@
 //! Integration tests of `traction identify`: recovery of known parameters from
 //! synthetic curves, the identifiability warning, bad input, and fits on the
 //! report's measured traces (Appendix I, Appendix VI).
-// Helpers outside #[test] functions unwrap too: any failure is a test failure.
+// Functions outside #[test] functions unwrap too: any failure is a test failure.
 #![allow(clippy::unwrap_used)]
 
 mod common;

@@ -2,7 +2,7 @@
 //! disc compliance of the report's Table 4-3 as a film-plus-disc stiffness):
 //! exact reductions, an independent grid scheme with the energy-norm return
 //! mapping, the rigid/plastic and viscoelastic limits, and dissipation.
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
 use traction_rheology::reference::grid as grid_reference;
 use traction_rheology::{

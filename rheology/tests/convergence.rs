@@ -1,7 +1,7 @@
 //! Convergence study of the elastic/plastic strip integrator: observed order
 //! in the s-step (plastic segments, RK4) and in the Y panel width, and the
 //! accuracy parameter's promise (error ≤ tol against a converged solution).
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, evaluate};

@@ -1,5 +1,5 @@
 //! Model tests: exact references, limits, symmetries, invariants, errors.
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
 use std::f64::consts::PI;
 
