@@ -54,7 +54,7 @@ use traction_regression::nls::{self, Fit, Parameter};
 use crate::contact::{
     ComplianceArg, EnvelopeArg, LimitArg, ModelArg, ModelOptions, ModulusArg, report_fluid,
 };
-use crate::error::CliError;
+use crate::error::{CliError, chain};
 use crate::table::{Table, TableWriter, fmt_f64, output_headers};
 
 /// Input columns every row needs (as `traction contact`).
@@ -283,16 +283,16 @@ impl Point {
             (None, None) => return Err("no peak μ: fill `fluid` or `mu`, or fit `mu`".into()),
         };
         let mu_spin = trial.mu_spin.or(self.mu_spin.map(|s| s * trial.mu_factor));
-        let mut fluid = Fluid::constant(m, mu).map_err(|e| e.to_string())?;
+        let mut fluid = Fluid::constant(m, mu).map_err(|e| chain(&e))?;
         if let Some(s) = mu_spin {
-            fluid = fluid.with_spin_peak(s).map_err(|e| e.to_string())?;
+            fluid = fluid.with_spin_peak(s).map_err(|e| chain(&e))?;
         }
         let contact = TractionContact::new(&self.body1, &self.body2, fluid, trial.options)
-            .map_err(|e| e.to_string())?;
+            .map_err(|e| chain(&e))?;
         let mut state = self.state;
         state.slip += trial.slip_offset * state.rolling_speed;
         state.side_slip += trial.side_slip_offset * state.rolling_speed;
-        contact.evaluate(&state).map_err(|e| e.to_string())
+        contact.evaluate(&state).map_err(|e| chain(&e))
     }
 }
 
@@ -324,7 +324,7 @@ impl Problem<'_> {
             .enumerate()
             .map(|(i, p)| {
                 p.evaluate(&trial)
-                    .map_err(|e| self.table.row_error(i, e).to_string())
+                    .map_err(|e| self.table.row_message(i, e).to_string())
             })
             .collect()
     }

@@ -2,7 +2,7 @@
 #![allow(clippy::unwrap_used, missing_docs)]
 
 use traction_rheology::map::Map;
-use traction_rheology::{Accuracy, Inputs, Model, RheologyError, evaluate};
+use traction_rheology::{Accuracy, Inputs, Model, OutOfRange, RheologyError, evaluate};
 
 /// The inputs at (J1, J2, J3) with the map's k, ΔX and gy (unvalidated:
 /// the map validates).
@@ -160,7 +160,7 @@ fn zero_spin_and_extreme_inputs() {
     }
     assert!(matches!(
         map.evaluate(&at(&map, f64::NAN, 0.0, 1.0)),
-        Err(RheologyError::NotFinite { name: "J1", .. })
+        Err(RheologyError::OutOfRange(OutOfRange { quantity: "J1", .. }))
     ));
     // Inputs of another geometry are refused by name.
     assert!(matches!(
@@ -168,12 +168,17 @@ fn zero_spin_and_extreme_inputs() {
         Err(RheologyError::MapKey { name: "k", .. })
     ));
     assert_eq!(
-        Map::new(2.0, 0.0, 1.0, Accuracy::new(1e-6).unwrap()).unwrap_err(),
-        RheologyError::MapTolerance(1e-6)
+        Map::new(2.0, 0.0, 1.0, Accuracy::new(1e-6).unwrap())
+            .unwrap_err()
+            .to_string(),
+        "map accuracy tol = 0.000001 is out of range: must be in [1e-4, 0.01]"
     );
     assert!(matches!(
         Map::new(500.0, 0.0, 1.0, Accuracy::new(1e-3).unwrap()),
-        Err(RheologyError::AspectRatio(_))
+        Err(RheologyError::OutOfRange(OutOfRange {
+            quantity: "aspect ratio k",
+            ..
+        }))
     ));
 }
 

@@ -5,6 +5,7 @@ use super::snapshot::{Snapshot, check_enum, check_real};
 use super::{CoSimulation, FmuError, FmuResult, Logger, Mode, Status};
 use crate::physics::{self, Contact, PhysicsError, UnknownCode};
 use crate::variables::{self, Causality, Type, vr};
+use traction_contact::error_chain;
 
 /// The traction contact FMU instance.
 #[derive(Debug, Clone)]
@@ -192,8 +193,9 @@ impl TractionFmu {
     fn contact(&mut self) -> Result<&Contact, FmuError> {
         if self.contact.is_none() {
             let p = self.physics_parameters()?;
-            let c = Contact::new(&p)
-                .map_err(|e: PhysicsError| FmuError::error(format!("invalid parameters: {e}")))?;
+            let c = Contact::new(&p).map_err(|e: PhysicsError| {
+                FmuError::error(format!("invalid parameters: {}", error_chain(&e)))
+            })?;
             if let Some(m) = self.spare_map.take() {
                 c.adopt_map(m);
             }
@@ -265,10 +267,9 @@ impl TractionFmu {
             omega,
             inlet_temperature_celsius: s.input::<{ vr::INLET_TEMPERATURE }>(),
         };
-        let o = self
-            .contact()?
-            .evaluate(&op)
-            .map_err(|e| FmuError::error(format!("contact evaluation failed: {e}")))?;
+        let o = self.contact()?.evaluate(&op).map_err(|e| {
+            FmuError::error(format!("contact evaluation failed: {}", error_chain(&e)))
+        })?;
         let coef = |f: f64| if op.load > 0.0 { f / op.load } else { 0.0 };
         let s = &mut self.s;
         let previous = s.outputs;
