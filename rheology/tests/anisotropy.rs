@@ -8,6 +8,7 @@ use traction_rheology::reference::grid as grid_reference;
 use traction_rheology::{
     Accuracy, Inputs, Model, Outputs, Properties, RheologyError, closed, evaluate,
 };
+use traction_testkit::{Lcg, XorShift64};
 
 /// The rigid/plastic model through [`evaluate`].
 fn rigid_plastic(i: &Inputs, a: Accuracy) -> Result<Outputs, RheologyError> {
@@ -118,13 +119,8 @@ fn limits_and_dissipation() {
     assert!(d < 1e-3, "{d}");
     // J7 = ∫Z·v is the dissipation (stored energy is zero at inlet and
     // outlet): ≥ 0 for every input; gy = 1 is the isotropic model exactly.
-    let mut s: u64 = 7;
-    let mut rnd = || {
-        s = s
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((s >> 11) as f64) / ((1u64 << 53) as f64)
-    };
+    let mut lcg = Lcg::new(7);
+    let mut rnd = || lcg.unit();
     for _ in 0..40 {
         let k = 10f64.powf(rnd() * 2.0 - 1.0);
         let (j1, j2, j3) = (8.0 * rnd() - 4.0, 4.0 * rnd() - 2.0, 20.0 * rnd() - 10.0);
@@ -166,13 +162,8 @@ fn large_j_with_anisotropy_meets_the_accuracy() {
         (0.251, -5.36, -10.41, 13.10, 0.258, 8.748),
         (0.051, 297.96, 74.10, 248.39, 0.109, 0.1),
     ];
-    let mut seed = 0x00c0_ffee_1234_5678u64;
-    let mut rnd = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut xs = XorShift64::new(0x00c0_ffee_1234_5678);
+    let mut rnd = || xs.unit();
     for _ in 0..60 {
         let k = 10f64.powf(-1.3 + 2.6 * rnd());
         let gy = 10f64.powf(-1.0 + 2.0 * rnd());
