@@ -17,12 +17,25 @@
 //! forces. A row's *baseline* m, μ, μ_s are its `m,mu,mu_spin` cells or, with
 //! a `fluid` column, the named fluid's correlations evaluated at the row's
 //! P0, |U|, θ, k (as `traction contact` would, before any compliance
-//! correction). The fitted parameters act on the baselines as listed in
+//! correction); a row with both a fluid and `m,mu` cells takes the cells (the
+//! values at the inlet, as in `traction contact`). The fitted parameters act on the baselines as listed in
 //! [`PARAMETERS`]: `m`, `mu`, `mu_spin` replace the baseline by one value for
 //! all rows (one operating condition); `m_factor`, `mu_factor` multiply each
 //! row's baseline (several conditions, the fluid's correlation trends kept);
 //! `slip_offset`, `side_slip_offset` are zero errors of the measured slip
 //! ratios (the model sees ΔU + offset·U).
+//!
+//! `--thermal`: the thermal contact (traction-contact `Options::thermal`). A
+//! row with a `fluid` keeps that report fluid, with its baseline m, μ as the
+//! values at the inlet temperature (`Fluid::with_inlet_values`), so its own
+//! film and temperature coefficients apply; a row with `m,mu` needs the
+//! thermal-property columns of `traction contact --thermal` (at least
+//! `film_thickness` or `viscosity,pressure_viscosity`, `fluid_conductivity`
+//! and `mu_temperature_coefficient`) unless they are fitted. The thermal
+//! parameters `mu_temperature_coefficient`, `m_temperature_coefficient` (one
+//! value for all rows, 1/K) and `film_factor` (a factor on every row's film
+//! thickness, i.e. on the film's thermal resistance h/(8k_f)) are fitted only
+//! with `--thermal`.
 //!
 //! The fit is nonlinear least squares (Levenberg–Marquardt,
 //! [`traction_regression::nls`]) with a central-difference Jacobian, steps of
@@ -47,12 +60,13 @@ use std::time::Instant;
 use clap::Args;
 use rayon::prelude::*;
 use traction_contact::{
-    Body, Compliance, Evaluation, Fluid, OperatingState, Options, TractionContact,
+    Body, Compliance, Evaluation, Film, Fluid, OperatingState, Options, Thermal, TractionContact,
 };
 use traction_regression::nls::{self, Fit, Parameter};
 
 use crate::contact::{
     ComplianceArg, EnvelopeArg, LimitArg, ModelArg, ModelOptions, ModulusArg, report_fluid,
+    thermal_columns,
 };
 use crate::error::{CliError, chain};
 use crate::table::{Table, TableWriter, fmt_f64, output_headers};
@@ -84,14 +98,16 @@ pub struct IdentifyArgs {
     #[arg(long)]
     pub input: String,
     /// Parameters to fit, comma separated: m, mu, mu_spin, m_factor,
-    /// mu_factor, slip_offset, side_slip_offset.
+    /// mu_factor, slip_offset, side_slip_offset; with --thermal also
+    /// mu_temperature_coefficient, m_temperature_coefficient, film_factor.
     #[arg(long, value_delimiter = ',', required = true)]
     pub fit: Vec<String>,
     /// Initial values, comma separated `name=value` (default: from the
     /// baselines or the data).
     #[arg(long, value_delimiter = ',')]
     pub start: Vec<String>,
-    /// Thermal contact model (fit its parameters too).
+    /// Thermal contact model (traction-contact `thermal`); its parameters
+    /// may be fitted too.
     #[arg(long)]
     pub thermal: bool,
     /// Output CSV `name,value,stderr` (`-` for stdout).
@@ -143,8 +159,14 @@ pub struct Trial {
     pub slip_offset: f64,
     /// Zero offset of ΔV/U.
     pub side_slip_offset: f64,
-    /// Contact options (the thermal parameters act here).
+    /// Contact options.
     pub options: Options,
+    /// β_μ for all rows, 1/K (thermal; replaces the row's value).
+    pub mu_temperature_coefficient: Option<f64>,
+    /// β_m for all rows, 1/K (thermal; replaces the row's value).
+    pub m_temperature_coefficient: Option<f64>,
+    /// Factor on every row's film thickness (thermal).
+    pub film_factor: f64,
 }
 
 /// What the initial value of a parameter is taken from.
@@ -161,8 +183,6 @@ enum Initial {
 }
 
 /// A named parameter of the calibration and how it maps onto the model.
-/// Thermal parameters are added as entries of [`PARAMETERS`] whose `apply`
-/// sets a field of [`Trial::options`].
 #[derive(Debug, Clone, Copy)]
 pub struct ParameterSpec {
     /// Name used in `--fit`, `--start` and the output.
@@ -177,6 +197,8 @@ pub struct ParameterSpec {
     pub upper: f64,
     /// Parameters that cannot be fitted together with this one.
     pub excludes: &'static [&'static str],
+    /// A parameter of the thermal model (fitted only with `--thermal`).
+    pub thermal: bool,
     initial: Initial,
     apply: fn(&mut Trial, f64),
 }
@@ -190,6 +212,7 @@ pub const PARAMETERS: &[ParameterSpec] = &[
         lower: 1e-3,
         upper: traction_contact::MAX_SLOPE,
         excludes: &["m_factor"],
+        thermal: false,
         initial: Initial::Slope,
         apply: |t, v| t.m = Some(v),
     },
@@ -200,6 +223,7 @@ pub const PARAMETERS: &[ParameterSpec] = &[
         lower: 1e-6,
         upper: traction_contact::MAX_TRACTION_COEFFICIENT,
         excludes: &["mu_factor"],
+        thermal: false,
         initial: Initial::Peak,
         apply: |t, v| t.mu = Some(v),
     },
@@ -210,6 +234,7 @@ pub const PARAMETERS: &[ParameterSpec] = &[
         lower: 1e-6,
         upper: traction_contact::MAX_TRACTION_COEFFICIENT,
         excludes: &[],
+        thermal: false,
         initial: Initial::SpinPeak,
         apply: |t, v| t.mu_spin = Some(v),
     },
@@ -220,6 +245,7 @@ pub const PARAMETERS: &[ParameterSpec] = &[
         lower: 1e-3,
         upper: 1e3,
         excludes: &["m"],
+        thermal: false,
         initial: Initial::Value(1.0),
         apply: |t, v| t.m_factor = v,
     },
@@ -230,6 +256,7 @@ pub const PARAMETERS: &[ParameterSpec] = &[
         lower: 1e-3,
         upper: 1e3,
         excludes: &["mu"],
+        thermal: false,
         initial: Initial::Value(1.0),
         apply: |t, v| t.mu_factor = v,
     },
@@ -240,6 +267,7 @@ pub const PARAMETERS: &[ParameterSpec] = &[
         lower: -0.5,
         upper: 0.5,
         excludes: &[],
+        thermal: false,
         initial: Initial::Value(0.0),
         apply: |t, v| t.slip_offset = v,
     },
@@ -250,8 +278,42 @@ pub const PARAMETERS: &[ParameterSpec] = &[
         lower: -0.5,
         upper: 0.5,
         excludes: &[],
+        thermal: false,
         initial: Initial::Value(0.0),
         apply: |t, v| t.side_slip_offset = v,
+    },
+    ParameterSpec {
+        name: "mu_temperature_coefficient",
+        description: "temperature coefficient β_μ = −d ln μ/dθ of the peak traction coefficient (1/K), one value for all rows",
+        scale: 1e-3,
+        lower: -traction_contact::thermal::MAX_TEMPERATURE_COEFFICIENT,
+        upper: traction_contact::thermal::MAX_TEMPERATURE_COEFFICIENT,
+        excludes: &[],
+        thermal: true,
+        initial: Initial::Value(0.0025),
+        apply: |t, v| t.mu_temperature_coefficient = Some(v),
+    },
+    ParameterSpec {
+        name: "m_temperature_coefficient",
+        description: "temperature coefficient β_m = −d ln m/dθ of the traction slope (1/K), one value for all rows",
+        scale: 1e-3,
+        lower: -traction_contact::thermal::MAX_TEMPERATURE_COEFFICIENT,
+        upper: traction_contact::thermal::MAX_TEMPERATURE_COEFFICIENT,
+        excludes: &[],
+        thermal: true,
+        initial: Initial::Value(0.0),
+        apply: |t, v| t.m_temperature_coefficient = Some(v),
+    },
+    ParameterSpec {
+        name: "film_factor",
+        description: "factor on every row's film thickness h, i.e. on the film's thermal resistance h/(8 k_f) (-)",
+        scale: 0.1,
+        lower: 1e-3,
+        upper: 1e3,
+        excludes: &[],
+        thermal: true,
+        initial: Initial::Value(1.0),
+        apply: |t, v| t.film_factor = v,
     },
 ];
 
@@ -267,6 +329,10 @@ struct Point {
     mu_spin: Option<f64>,
     fx: Option<f64>,
     fy: Option<f64>,
+    /// The row's report fluid (thermal: its own film and coefficients).
+    fluid: Option<Fluid>,
+    /// The row's thermal model (`--thermal`): defaults and its columns.
+    thermal: Option<Thermal>,
 }
 
 impl Point {
@@ -283,16 +349,84 @@ impl Point {
             (None, None) => return Err("no peak μ: fill `fluid` or `mu`, or fit `mu`".into()),
         };
         let mu_spin = trial.mu_spin.or(self.mu_spin.map(|s| s * trial.mu_factor));
-        let mut fluid = Fluid::constant(m, mu).map_err(|e| chain(&e))?;
-        if let Some(s) = mu_spin {
-            fluid = fluid.with_spin_peak(s).map_err(|e| chain(&e))?;
-        }
-        let contact = TractionContact::new(&self.body1, &self.body2, fluid, trial.options)
+        let mut options = trial.options;
+        let fluid = match (self.thermal, &self.fluid) {
+            (Some(row), report) => {
+                options.thermal = Some(self.thermal_of(row, trial)?);
+                match report {
+                    Some(f) => f.clone().with_inlet_values(m, mu).map_err(|e| chain(&e))?,
+                    None => Fluid::constant(m, mu).map_err(|e| chain(&e))?,
+                }
+            }
+            (None, _) => Fluid::constant(m, mu).map_err(|e| chain(&e))?,
+        };
+        let fluid = match mu_spin {
+            Some(s) => fluid.with_spin_peak(s).map_err(|e| chain(&e))?,
+            None => fluid,
+        };
+        let contact = TractionContact::new(&self.body1, &self.body2, fluid, options)
             .map_err(|e| chain(&e))?;
         let mut state = self.state;
         state.slip += trial.slip_offset * state.rolling_speed;
         state.side_slip += trial.side_slip_offset * state.rolling_speed;
         contact.evaluate(&state).map_err(|e| chain(&e))
+    }
+
+    /// The row's thermal model under `trial`: fitted coefficients replace
+    /// the row's, the film factor scales its film thickness (a given one, a
+    /// Hamrock–Dowson film from given η₀ and α, or the report fluid's own).
+    fn thermal_of(&self, row: Thermal, trial: &Trial) -> Result<Thermal, String> {
+        let mut th = row;
+        if let Some(b) = trial.mu_temperature_coefficient {
+            th.mu_coefficient = Some(b);
+        }
+        if let Some(b) = trial.m_temperature_coefficient {
+            th.slope_coefficient = Some(b);
+        }
+        if trial.film_factor != 1.0 {
+            th.film = Film::Thickness(self.film_thickness(&th)? * trial.film_factor);
+        }
+        Ok(th)
+    }
+
+    /// The film thickness the row's thermal model would use, m.
+    fn film_thickness(&self, th: &Thermal) -> Result<f64, String> {
+        let g =
+            traction_hertz::Geometry::new(&self.body1, &self.body2).map_err(|e| e.to_string())?;
+        let s = &self.state;
+        let hd = |viscosity: f64, alpha: f64| {
+            traction_contact::thermal::hamrock_dowson_central(
+                1.0 / g.curvature_x,
+                g.e_prime,
+                g.k,
+                s.load,
+                s.rolling_speed.abs(),
+                viscosity,
+                alpha,
+            )
+        };
+        match (th.film, &self.fluid) {
+            (Film::Thickness(h), _) => Ok(h),
+            (
+                Film::HamrockDowson {
+                    viscosity,
+                    pressure_viscosity,
+                },
+                _,
+            ) => Ok(hd(viscosity, pressure_viscosity)),
+            (_, Some(Fluid::Report { fluid, .. })) => {
+                let p = traction_fluids::ThermalProperties::of(fluid.name)
+                    .map_err(|e| e.to_string())?;
+                Ok(hd(
+                    p.viscosity(s.inlet_temperature_celsius),
+                    p.pressure_viscosity,
+                ))
+            }
+            _ => Err(
+                "film_factor: the row has no film thickness (film_thickness, or viscosity and pressure_viscosity)"
+                    .into(),
+            ),
+        }
     }
 }
 
@@ -460,6 +594,11 @@ fn parse_fit_list(args: &IdentifyArgs) -> Result<Vec<&'static ParameterSpec>, Cl
                 known()
             ))
         })?;
+        if spec.thermal && !args.thermal {
+            return Err(CliError::Usage(format!(
+                "--fit: `{name}` is a parameter of the thermal model: add --thermal"
+            )));
+        }
         if specs.iter().any(|s| s.name == name) {
             return Err(CliError::Usage(format!(
                 "--fit: parameter `{name}` given twice"
@@ -541,6 +680,7 @@ fn read_points(
     let mut baseline_opts = model.options().map_err(CliError::Usage)?;
     baseline_opts.compliance = Compliance::Off;
     baseline_opts.classify_regime = false;
+    baseline_opts.thermal = None;
     let mut points = Vec::with_capacity(table.len());
     for row in 0..table.len() {
         let v = |c: &str| table.f64(row, c);
@@ -560,10 +700,12 @@ fn read_points(
         } else {
             None
         };
+        let mut report = None;
         let (m, mu, mu_spin) = match name {
             Some(n) => {
                 let fluid = report_fluid(&n, model.rule(), false)
                     .map_err(|e| table.cell_error(row, "fluid", e))?;
+                report = Some(fluid.clone());
                 let c = TractionContact::new(&body1, &body2, fluid, baseline_opts)
                     .map_err(|e| table.row_error(row, e))?;
                 let mut s = state;
@@ -577,7 +719,21 @@ fn read_points(
                         e.outside_envelope
                     );
                 }
-                (Some(e.m_used), Some(e.mu_used), None)
+                // Given m, μ cells override the correlation (as in `traction
+                // contact`: the values at the inlet, the fluid supplying the
+                // temperature dependence and film of the thermal model).
+                let given = |c: &str| {
+                    if table.has(c) {
+                        table.opt_f64(row, c)
+                    } else {
+                        Ok(None)
+                    }
+                };
+                (
+                    Some(given("m")?.unwrap_or(e.m_used)),
+                    Some(given("mu")?.unwrap_or(e.mu_used)),
+                    None,
+                )
             }
             None => {
                 let (m, mu) = (table.opt_f64(row, "m")?, table.opt_f64(row, "mu")?);
@@ -606,6 +762,13 @@ fn read_points(
                 _ => Ok(v),
             }
         };
+        let thermal = match model.options().map_err(CliError::Usage)?.thermal {
+            Some(mut th) => {
+                thermal_columns(table, row, &mut th)?;
+                Some(th)
+            }
+            None => None,
+        };
         points.push(Point {
             body1,
             body2,
@@ -615,6 +778,8 @@ fn read_points(
             mu_spin,
             fx: measured("fx_over_n")?,
             fy: measured("fy_over_n")?,
+            fluid: report,
+            thermal,
         });
     }
     Ok(points)
@@ -622,13 +787,6 @@ fn read_points(
 
 /// Run the subcommand.
 pub fn run(args: IdentifyArgs) -> Result<(), CliError> {
-    if args.thermal {
-        return Err(CliError::Usage(
-            "--thermal: the thermal contact model is not available in this build \
-             (traction-contact has no thermal option); identify the isothermal model without --thermal"
-                .into(),
-        ));
-    }
     if args.max_iterations == 0 {
         return Err(CliError::Usage(
             "--max-iterations must be at least 1".into(),
@@ -645,7 +803,7 @@ pub fn run(args: IdentifyArgs) -> Result<(), CliError> {
         floor: args.floor,
         modulus: ModulusArg::Constant,
         limit: LimitArg::Pressure,
-        thermal: false,
+        thermal: args.thermal,
     };
     let mut options = model.options().map_err(CliError::Usage)?;
     options.classify_regime = false;
@@ -681,6 +839,9 @@ pub fn run(args: IdentifyArgs) -> Result<(), CliError> {
             slip_offset: 0.0,
             side_slip_offset: 0.0,
             options,
+            mu_temperature_coefficient: None,
+            m_temperature_coefficient: None,
+            film_factor: 1.0,
         },
         index,
     };

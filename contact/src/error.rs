@@ -80,20 +80,3 @@ pub fn error_chain(e: &dyn std::error::Error) -> String {
     }
     text
 }
-
-pub(crate) fn check(
-    quantity: &'static str,
-    value: f64,
-    ok: bool,
-    valid: &'static str,
-) -> Result<f64, ContactError> {
-    if ok && value.is_finite() {
-        Ok(value)
-    } else {
-        Err(ContactError::OutOfRange {
-            quantity,
-            value,
-            valid,
-        })
-    }
-}

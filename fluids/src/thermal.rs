@@ -3,6 +3,8 @@
 //! coefficient α (Hamrock–Dowson film thickness), fluid conductivity k_f and
 //! the temperature coefficients of μ and m. Sources in the data file's header.
 
+use std::sync::OnceLock;
+
 use crate::{FluidError, FluidName};
 
 const THERMAL_CSV: &str = include_str!("../data/thermal_properties.csv");
@@ -25,8 +27,25 @@ pub struct ThermalProperties {
 }
 
 impl ThermalProperties {
-    /// The properties of a report fluid from `data/thermal_properties.csv`.
+    /// The properties of a report fluid from `data/thermal_properties.csv`
+    /// (parsed once per process; the thermal contact asks for them at every
+    /// evaluation).
     pub fn of(name: FluidName) -> Result<ThermalProperties, FluidError> {
+        static PARSED: OnceLock<[Result<ThermalProperties, FluidError>; 2]> = OnceLock::new();
+        let all = PARSED.get_or_init(|| {
+            [
+                Self::parse(FluidName::Santotrac50),
+                Self::parse(FluidName::Tdf88),
+            ]
+        });
+        match name {
+            FluidName::Santotrac50 => all[0].clone(),
+            FluidName::Tdf88 => all[1].clone(),
+        }
+    }
+
+    /// Parse the data file's row of a fluid.
+    fn parse(name: FluidName) -> Result<ThermalProperties, FluidError> {
         let bad = |line: usize, message: String| FluidError::Data {
             file: "thermal_properties.csv",
             line,

@@ -307,3 +307,26 @@ def test_viscoelastic_and_spin_peak_through_fmpy(fmu_path):
     # Same J groups, forces scaled by mu_s/mu (1e-12 relative).
     assert abs(spin_peak[0] / ep[0] - 0.06 / 0.075) < 1e-12
     assert abs(spin_peak[3] / ep[3] - 1.0) < 1e-12
+    # Thermal contact: the film heats (temperature_rise > 0, read back
+    # through FMPy) and the traction falls; off, the rise is exactly 0.
+    def rise_and_fx(bools):
+        fmu = FMU2Slave(
+            guid=md.guid, unzipDirectory=unzipped, modelIdentifier="TractionContact", instanceName="thermal"
+        )
+        fmu.instantiate(callbacks=callbacks)
+        fmu.setupExperiment(startTime=0.0)
+        for name, x in bools:
+            fmu.setBoolean([vr[name]], [x])
+        fmu.setReal([vr["omega1"], vr["omega2"], vr["spin"]], [600.0, 270.0, 20.0])
+        fmu.enterInitializationMode()
+        try:
+            fmu.exitInitializationMode()
+            fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=0.01)
+            return fmu.getReal([vr["temperature_rise"], vr["fx"]])
+        finally:
+            fmu.freeInstance()
+
+    cold = rise_and_fx([])
+    hot = rise_and_fx([("thermal", True)])
+    assert cold[0] == 0.0 and hot[0] > 1.0, (cold, hot)
+    assert abs(hot[1]) < abs(cold[1]), (cold, hot)

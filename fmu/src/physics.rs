@@ -49,7 +49,7 @@
 use traction_contact::{
     Body, Compliance, ContactError, DEBORAH_RANGE, Direction, DiscMaterial, EnvelopeRule,
     KALKER_POISSON_RANGE, Model, OperatingState, Options, OutOfRange, REFERENCE_STRESS_RANGE,
-    ROLLING_SPEED_FLOOR_RANGE, Range, SLOPE_RANGE, TractionContact,
+    ROLLING_SPEED_FLOOR_RANGE, Range, SLOPE_RANGE, TractionContact, thermal,
 };
 
 /// Valid `mu_user` and `mu_spin_user`: (0, 1). Narrower on purpose than
@@ -209,6 +209,16 @@ pub struct Parameters {
     pub tolerance: f64,
     /// Interpolation map of the J+T model (traction-contact `Options::map`).
     pub map: bool,
+    /// Thermal contact (traction-contact `Options::thermal`).
+    pub thermal: bool,
+    /// Film thickness h of the thermal model for the user fluid, m.
+    pub film_thickness: f64,
+    /// Thermal conductivity k_f of the user fluid, W/(m·K).
+    pub fluid_conductivity: f64,
+    /// Temperature coefficient β_μ of the user fluid's μ, 1/K.
+    pub mu_temperature_coefficient: f64,
+    /// Temperature coefficient β_m of the user fluid's m, 1/K.
+    pub m_temperature_coefficient: f64,
 }
 
 /// One operating state of the contact (SI units).
@@ -258,6 +268,9 @@ pub struct Outputs {
     pub regime: Option<Regime>,
     /// A report fluid's correlation was used outside its data envelope.
     pub outside_envelope: bool,
+    /// Mean film temperature rise over the inlet (thermal model), K; 0
+    /// without it.
+    pub temperature_rise: f64,
 }
 
 /// Why the contact cannot be built or evaluated. Each message names the
@@ -303,6 +316,38 @@ pub fn kalker_combined(e1: f64, nu1: f64, e2: f64, nu2: f64) -> DiscMaterial {
         youngs_modulus: 2.0 * g * (1.0 + nu),
         poisson_ratio: nu,
     }
+}
+
+/// The thermal model of the parameters: the report fluids' own property set
+/// (traction-fluids `ThermalProperties`), or the user fluid's film thickness,
+/// conductivity and temperature coefficients, checked here against the
+/// ranges of traction-contact's `Thermal::validate` so that the error names
+/// the FMU parameter.
+fn thermal(p: &Parameters) -> Result<Option<traction_contact::Thermal>, PhysicsError> {
+    if !p.thermal {
+        return Ok(None);
+    }
+    Ok(Some(match p.fluid {
+        Fluid::User => {
+            let (h, k) = (p.film_thickness, p.fluid_conductivity);
+            thermal::FILM_THICKNESS_RANGE.check("film_thickness", h)?;
+            thermal::CONDUCTIVITY_RANGE.check("fluid_conductivity", k)?;
+            for (name, b) in [
+                ("mu_temperature_coefficient", p.mu_temperature_coefficient),
+                ("m_temperature_coefficient", p.m_temperature_coefficient),
+            ] {
+                thermal::TEMPERATURE_COEFFICIENT_RANGE.check(name, b)?;
+            }
+            traction_contact::Thermal {
+                film: traction_contact::Film::Thickness(h),
+                fluid_conductivity: Some(k),
+                mu_coefficient: Some(p.mu_temperature_coefficient),
+                slope_coefficient: Some(p.m_temperature_coefficient),
+                ..traction_contact::Thermal::default()
+            }
+        }
+        Fluid::Santotrac50 | Fluid::Tdf88 => traction_contact::Thermal::default(),
+    }))
 }
 
 /// The contact, built once from its parameters.
@@ -412,6 +457,7 @@ impl Contact {
             compliance,
             rolling_speed_floor: p.u_reg,
             map: p.map,
+            thermal: thermal(p)?,
             ..Options::default()
         };
         let contact = TractionContact::new(&b1, &b2, fluid, options)?;
@@ -470,6 +516,7 @@ impl Contact {
             j: [r.j1, r.j2, r.j3, r.j4, r.j5, r.j6, r.j7],
             regime: Some(regime),
             outside_envelope: r.outside_envelope.any(),
+            temperature_rise: r.temperature_rise,
         })
     }
 }
@@ -529,6 +576,11 @@ mod tests {
             u_reg: 0.01,
             tolerance: 1e-4,
             map: true,
+            thermal: false,
+            film_thickness: 0.5e-6,
+            fluid_conductivity: 0.11,
+            mu_temperature_coefficient: 0.0025,
+            m_temperature_coefficient: 0.0,
         }
     }
 

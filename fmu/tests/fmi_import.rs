@@ -130,6 +130,14 @@ fn default_parameters() -> traction_fmu::physics::Parameters {
             .iter()
             .find(|v| v.name == "rheology_map")
             .is_some_and(|v| matches!(v.kind, Kind::Boolean { start: Some(true) })),
+        thermal: VARIABLES
+            .iter()
+            .find(|v| v.name == "thermal")
+            .is_some_and(|v| matches!(v.kind, Kind::Boolean { start: Some(true) })),
+        film_thickness: s("film_thickness"),
+        fluid_conductivity: s("fluid_conductivity"),
+        mu_temperature_coefficient: s("mu_temperature_coefficient"),
+        m_temperature_coefficient: s("m_temperature_coefficient"),
     }
 }
 

@@ -2,7 +2,7 @@
 //! tolerance of the corresponding golden test (`tests/tests/*.rs`) and the
 //! figures drawn from it ([`Figure`]). One module per table family: [`hertz`]
 //! (Tables 2-1..2-3), [`spin`] (2-5), [`compliance`] (4-3), [`appendix_i`](mod@appendix_i),
-//! [`appendix_iii`](mod@appendix_iii), [`traction`] (Appendices VI, VII-A, VII-B).
+//! [`appendix_iii`](mod@appendix_iii), [`traction`] (Appendices VI, VII-A, VII-B, VII-E).
 //!
 //! Printed values come from the curated data in `fluids/data/` (through
 //! `traction-fluids`, or [`crate::data`] for Appendices VI, VII-A, VII-B);
@@ -24,7 +24,7 @@ pub use appendix_iii::{
 pub use compliance::table_4_3;
 pub use hertz::{table_2_1, table_2_2, table_2_3};
 pub use spin::{table_2_5, table_2_5_hertz_c};
-pub use traction::{appendix_vi, appendix_vii_a, appendix_vii_b};
+pub use traction::{appendix_vi, appendix_vii_a, appendix_vii_b, appendix_vii_e};
 
 use crate::{ReproduceError, Row, TableResult, Tolerance};
 
@@ -150,6 +150,7 @@ pub fn catalogue() -> Vec<(&'static str, TableFn)> {
         ("appendix-vi", appendix_vi),
         ("appendix-vii-a", appendix_vii_a),
         ("appendix-vii-b", appendix_vii_b),
+        ("appendix-vii-e", appendix_vii_e),
     ]
 }
 

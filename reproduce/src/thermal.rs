@@ -469,3 +469,130 @@ pub fn attach_appendix_vii_a(rows: &mut [Row]) -> Result<(), ReproduceError> {
 pub fn attach_appendix_vii_b(rows: &mut [Row]) -> Result<(), ReproduceError> {
     attach(rows, appendix_vii_b(None)?, "Appendix VII-B")
 }
+
+/// One Appendix VII-E peak: the measured point, the reference μ of its
+/// zero-spin, zero-side-slip test (the model's inlet μ), and the thermal
+/// contact's peak of Fx/N over the slip ratio.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VIIEPeak {
+    /// The measured point.
+    pub point: traction_fluids::CombinedSlipPoint,
+    /// μ of the zero-spin, zero-side-slip row of the same fluid, P0 and k
+    /// (the model's inlet μ, with that test's m).
+    pub reference_mu: f64,
+    /// The thermal contact's peak traction coefficient at the point's spin
+    /// and side slip.
+    pub thermal: f64,
+    /// The slip ratio ΔU/U of the thermal peak.
+    pub slip_at_peak: f64,
+    /// The point is the reference itself (an input, not a prediction).
+    pub is_reference: bool,
+}
+
+/// Largest Fx/N over the slip ratio ΔU/U ∈ [1e-4, 0.2] of one contact at
+/// fixed side slip and spin: a geometric grid of 24 points, then golden
+/// section on the bracket around the best (the thermal curve has one
+/// maximum; the isothermal one rises monotonically to μ).
+fn peak_over_slip(
+    c: &TractionContact,
+    load: f64,
+    u: f64,
+    dv: f64,
+    w: f64,
+    theta: f64,
+) -> Result<(f64, f64), ReproduceError> {
+    let fx = |r: f64| -> Result<f64, ReproduceError> {
+        Ok(evaluate(c, load, u, r * u, dv, w, theta)?.traction_x)
+    };
+    let (lo, hi, n) = (1e-4_f64, 0.2_f64, 24);
+    let grid: Vec<f64> = (0..n)
+        .map(|i| lo * (hi / lo).powf(i as f64 / (n - 1) as f64))
+        .collect();
+    let values = grid.iter().map(|&r| fx(r)).collect::<Result<Vec<_>, _>>()?;
+    let best = (0..n)
+        .max_by(|&i, &j| values[i].total_cmp(&values[j]))
+        .unwrap_or(0);
+    let (mut a, mut b) = (
+        grid[best.saturating_sub(1)].ln(),
+        grid[(best + 1).min(n - 1)].ln(),
+    );
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
+    let (mut f1, mut f2) = (fx(x1.exp())?, fx(x2.exp())?);
+    for _ in 0..14 {
+        if f1 > f2 {
+            b = x2;
+            (x2, f2) = (x1, f1);
+            x1 = b - g * (b - a);
+            f1 = fx(x1.exp())?;
+        } else {
+            a = x1;
+            (x1, f1) = (x2, f2);
+            x2 = a + g * (b - a);
+            f2 = fx(x2.exp())?;
+        }
+    }
+    Ok([(values[best], grid[best]), (f1, x1.exp()), (f2, x2.exp())]
+        .into_iter()
+        .fold(
+            (f64::NEG_INFINITY, 0.0),
+            |a, b| if b.0 > a.0 { b } else { a },
+        ))
+}
+
+/// Appendix VII-E: the thermal contact's peak traction coefficient under
+/// side slip (and the low-speed machine's 6° spin) for every printed value
+/// whose fluid, P0 and k have a zero-spin test (m and its zero-side-slip μ
+/// are the inlet values; ω√(ab)/U = C''·P0 with Table 2-5's C''). The
+/// isothermal J+T model's peak is μ itself at every side slip and spin (J4 →
+/// 1 as ΔU/U grows), so the measured fall of the peak with side slip is what
+/// the thermal model is judged on.
+pub fn appendix_vii_e(beta: Option<[f64; 2]>) -> Result<Vec<VIIEPeak>, ReproduceError> {
+    let pts = traction_fluids::appendix_vii_e().map_err(|e| err("Appendix VII-E data", e))?;
+    let reference = |p: &traction_fluids::CombinedSlipPoint| {
+        pts.iter().find(|q| {
+            q.fluid == p.fluid
+                && q.p0_gpa == p.p0_gpa
+                && q.k == p.k
+                && q.spin_deg == 0.0
+                && q.side_slip_pct == 0.0
+                && q.m.is_some()
+        })
+    };
+    pts.par_iter()
+        .filter_map(|p| reference(p).map(|r| (p, r)))
+        .map(|(p, r)| {
+            let fluid = if p.fluid.contains("TDF") {
+                FluidName::Tdf88
+            } else {
+                FluidName::Santotrac50
+            };
+            let m = r.m.ok_or_else(|| err("Appendix VII-E", "no m"))?;
+            let bodies = low_speed(p.k).ok_or_else(|| err("VII-E", format!("k = {}", p.k)))?;
+            let c = contact(&bodies, fluid, m, r.mu, beta)?;
+            let hz = c
+                .geometry()
+                .at_p0(p.p0_gpa * 1e9)
+                .map_err(|e| err("Hertz", e))?;
+            let u = 20.0;
+            let w = if p.spin_deg > 0.0 {
+                let c2 = traction_fluids::spin_factor(p.k, p.spin_deg)
+                    .map_err(|e| err("Table 2-5", e))?
+                    .ok_or_else(|| err("Table 2-5", format!("no C'' at k = {}", p.k)))?
+                    .c_table_2_5;
+                c2 * p.p0_gpa * u / (hz.a * hz.b).sqrt()
+            } else {
+                0.0
+            };
+            let dv = p.side_slip_pct / 100.0 * u;
+            let (thermal, slip_at_peak) = peak_over_slip(&c, hz.load, u, dv, w, 70.0)?;
+            Ok(VIIEPeak {
+                point: p.clone(),
+                reference_mu: r.mu,
+                thermal,
+                slip_at_peak,
+                is_reference: std::ptr::eq(p, r),
+            })
+        })
+        .collect()
+}

@@ -177,6 +177,11 @@ impl TractionFmu {
             u_reg: s.param::<{ vr::U_REG }>(),
             tolerance: s.param::<{ vr::RHEOLOGY_TOLERANCE }>(),
             map: s.flag::<{ vr::RHEOLOGY_MAP }>(),
+            thermal: s.flag::<{ vr::THERMAL }>(),
+            film_thickness: s.param::<{ vr::FILM_THICKNESS }>(),
+            fluid_conductivity: s.param::<{ vr::FLUID_CONDUCTIVITY }>(),
+            mu_temperature_coefficient: s.param::<{ vr::MU_TEMPERATURE_COEFFICIENT }>(),
+            m_temperature_coefficient: s.param::<{ vr::M_TEMPERATURE_COEFFICIENT }>(),
         })
     }
 
@@ -292,6 +297,7 @@ impl TractionFmu {
         s.set_output::<{ vr::M_USED }>(o.m);
         s.set_output::<{ vr::MU_USED }>(o.mu);
         s.set_output::<{ vr::MU_FORCE }>(o.mu_force);
+        s.set_output::<{ vr::TEMPERATURE_RISE }>(o.temperature_rise);
         s.set_output::<{ vr::J1 }>(o.j[0]);
         s.set_output::<{ vr::J2 }>(o.j[1]);
         s.set_output::<{ vr::J3 }>(o.j[2]);

@@ -146,7 +146,9 @@ fn report_fluid_through_start_up_warns_once_and_stays_finite() {
     f.enter_initialization_mode().unwrap();
     let mut log = Capture(Vec::new());
     f.exit_initialization_mode(&mut log).unwrap();
-    let all: Vec<u32> = (vr::FX..=vr::MU_FORCE).chain(vr::J1..=vr::J7).collect();
+    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
+        .chain(vr::J1..=vr::J7)
+        .collect();
     let mut o = vec![0.0; all.len()];
     for k in 0..200 {
         // Run up from rest with 1 % slip.
@@ -179,7 +181,9 @@ fn state_round_trip_is_bit_exact() {
     let back = TractionFmu::deserialize_state(&bytes).unwrap();
     assert_eq!(TractionFmu::serialize_state(&back), bytes);
     let mut o1 = [0.0; N_OUT];
-    let all: Vec<u32> = (vr::FX..=vr::MU_FORCE).chain(vr::J1..=vr::J7).collect();
+    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
+        .chain(vr::J1..=vr::J7)
+        .collect();
     f.do_step(0.1, 0.1, &mut NullLogger).unwrap();
     f.get_real(&all, &mut o1, &mut NullLogger).unwrap();
     f.set_real(&[vr::OMEGA1], &[1.0]).unwrap();
@@ -258,7 +262,9 @@ fn run(
     )?;
     f.enter_initialization_mode()?;
     f.exit_initialization_mode(&mut NullLogger)?;
-    let all: Vec<u32> = (vr::FX..=vr::MU_FORCE).chain(vr::J1..=vr::J7).collect();
+    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
+        .chain(vr::J1..=vr::J7)
+        .collect();
     let mut o = vec![0.0; all.len()];
     f.get_real(&all, &mut o, &mut NullLogger)?;
     Ok((f, o))
@@ -455,6 +461,81 @@ fn spin_peak_equals_traction_contact() {
     // Out of range: error naming the parameter.
     let e = run(&[(vr::MU_SPIN_USER, 1.5)], &[], &[(vr::SPIN_PEAK, true)]).unwrap_err();
     assert!(e.message.contains("mu_spin_user"), "{e}");
+}
+
+#[test]
+fn thermal_parameter_equals_traction_contact() {
+    // Off (default): temperature_rise is 0 and the contact is isothermal
+    // (bit-identical to traction-contact without the thermal model).
+    let (b1, b2) = default_bodies(2.07e11, 0.3);
+    let ep = traction_contact::Model::ElasticPlastic;
+    let (_, off) = run(&[], &[], &[]).unwrap();
+    assert_eq!(off[out_index(vr::TEMPERATURE_RISE).unwrap()], 0.0);
+    // User fluid: the FMU's film thickness, conductivity and temperature
+    // coefficients reach traction-contact's Thermal; forces and the rise
+    // equal a direct evaluation (1e-12 relative: the FMU copies them).
+    let reals = [
+        (vr::FILM_THICKNESS, 0.4e-6),
+        (vr::FLUID_CONDUCTIVITY, 0.12),
+        (vr::MU_TEMPERATURE_COEFFICIENT, 0.004),
+        (vr::M_TEMPERATURE_COEFFICIENT, 0.001),
+    ];
+    let (_, on) = run(&reals, &[], &[(vr::THERMAL, true)]).unwrap();
+    let thermal = traction_contact::Thermal {
+        film: traction_contact::Film::Thickness(0.4e-6),
+        fluid_conductivity: Some(0.12),
+        mu_coefficient: Some(0.004),
+        slope_coefficient: Some(0.001),
+        ..traction_contact::Thermal::default()
+    };
+    let c = traction_contact::TractionContact::new(
+        &b1,
+        &b2,
+        user_fluid(),
+        traction_contact::Options {
+            thermal: Some(thermal),
+            ..options(ep)
+        },
+    )
+    .unwrap();
+    let d = direct(&c, &on);
+    assert_matches(&on, &d);
+    let rise = on[out_index(vr::TEMPERATURE_RISE).unwrap()];
+    assert!(rise > 1.0, "side slip and spin heat the film: {rise} K");
+    assert!((rise - d.temperature_rise).abs() <= 1e-12 * rise);
+    let fy = |o: &[f64]| o[out_index(vr::FY).unwrap()];
+    assert!(
+        fy(&on).abs() < fy(&off).abs(),
+        "heating lowers the traction"
+    );
+    // A report fluid: its own property set (Thermal::default()).
+    let (_, tdf) = run(&[], &[(vr::FLUID, 2)], &[(vr::THERMAL, true)]).unwrap();
+    let fluid = traction_contact::Fluid::tdf_88(traction_contact::EnvelopeRule::Clamp).unwrap();
+    let c = traction_contact::TractionContact::new(
+        &b1,
+        &b2,
+        fluid,
+        traction_contact::Options {
+            thermal: Some(traction_contact::Thermal::default()),
+            ..options(ep)
+        },
+    )
+    .unwrap();
+    assert_matches(&tdf, &direct(&c, &tdf));
+    assert!(tdf[out_index(vr::TEMPERATURE_RISE).unwrap()] > 0.0);
+    // Out of range: errors naming the parameter; thermal with the spin
+    // peak is refused (the same heating twice).
+    let on = [(vr::THERMAL, true)];
+    let e = run(&[(vr::FILM_THICKNESS, 0.0)], &[], &on).unwrap_err();
+    assert!(e.message.contains("film_thickness"), "{e}");
+    let e = run(&[(vr::FLUID_CONDUCTIVITY, f64::NAN)], &[], &on).unwrap_err();
+    assert!(e.message.contains("fluid_conductivity"), "{e}");
+    let e = run(&[(vr::MU_TEMPERATURE_COEFFICIENT, 2.0)], &[], &on).unwrap_err();
+    assert!(e.message.contains("mu_temperature_coefficient"), "{e}");
+    // Thermal off: the thermal parameters are not used (not checked).
+    assert!(run(&[(vr::FILM_THICKNESS, 0.0)], &[], &[]).is_ok());
+    let e = run(&[], &[], &[(vr::THERMAL, true), (vr::SPIN_PEAK, true)]).unwrap_err();
+    assert!(e.message.contains("spin-peak"), "{e}");
 }
 
 #[test]

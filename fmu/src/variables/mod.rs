@@ -199,6 +199,14 @@ pub mod vr {
     pub const MU_SPIN_USER: u32 = 18;
     /// `rheology_tolerance`.
     pub const RHEOLOGY_TOLERANCE: u32 = 19;
+    /// `film_thickness`.
+    pub const FILM_THICKNESS: u32 = 20;
+    /// `fluid_conductivity`.
+    pub const FLUID_CONDUCTIVITY: u32 = 21;
+    /// `mu_temperature_coefficient`.
+    pub const MU_TEMPERATURE_COEFFICIENT: u32 = 22;
+    /// `m_temperature_coefficient`.
+    pub const M_TEMPERATURE_COEFFICIENT: u32 = 23;
     // Real inputs 100..
     /// `normal_load`.
     pub const LOAD: u32 = 100;
@@ -253,6 +261,8 @@ pub mod vr {
     pub const MU_USED: u32 = 217;
     /// `mu_force`.
     pub const MU_FORCE: u32 = 218;
+    /// `temperature_rise`.
+    pub const TEMPERATURE_RISE: u32 = 219;
     /// `J1`.
     pub const J1: u32 = 221;
     /// `J2`.
@@ -284,6 +294,8 @@ pub mod vr {
     pub const SPIN_PEAK: u32 = 306;
     /// `rheology_map`.
     pub const RHEOLOGY_MAP: u32 = 307;
+    /// `thermal`.
+    pub const THERMAL: u32 = 308;
     /// `regime`.
     pub const REGIME: u32 = 310;
 }
@@ -472,7 +484,7 @@ mod tests {
                 N_ENUM_PARAMS,
                 N_BOOL_PARAMS
             ),
-            (19, 7, 26, 5, 3)
+            (23, 7, 27, 5, 4)
         );
         assert_eq!(N_ENUM_OUTPUTS, 1);
         // Every row has a slot, the slots of a class are 0..count in table order.
@@ -494,7 +506,7 @@ mod tests {
         assert_eq!(slot(0), None);
         assert_eq!(by_vr(99), None);
         assert_eq!(index(vr::RY1, Causality::Parameter, Type::Real), 1);
-        assert_eq!(index(vr::J1, Causality::Output, Type::Real), 19);
+        assert_eq!(index(vr::J1, Causality::Output, Type::Real), 20);
     }
 
     #[test]

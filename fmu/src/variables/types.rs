@@ -60,6 +60,21 @@ pub const UNITS: &[Unit] = &[
         offset: 273.15,
     },
     Unit {
+        name: "K",
+        exponents: [0, 0, 0, 0, 1, 0, 0, 0],
+        offset: 0.0,
+    },
+    Unit {
+        name: "W/(m.K)",
+        exponents: [1, 1, -3, 0, -1, 0, 0, 0],
+        offset: 0.0,
+    },
+    Unit {
+        name: "1/K",
+        exponents: [0, 0, 0, 0, -1, 0, 0, 0],
+        offset: 0.0,
+    },
+    Unit {
         name: "1",
         exponents: [0; 8],
         offset: 0.0,
@@ -77,6 +92,9 @@ pub const REAL_TYPES: &[(&str, &str, &str)] = &[
     ("AngularVelocity", "AngularVelocity", "rad/s"),
     ("Power", "Power", "W"),
     ("Temperature", "ThermodynamicTemperature", "degC"),
+    ("TemperatureDifference", "TemperatureDifference", "K"),
+    ("ThermalConductivity", "ThermalConductivity", "W/(m.K)"),
+    ("TemperatureCoefficient", "TemperatureCoefficient", "1/K"),
     ("Dimensionless", "Dimensionless", "1"),
 ];
 

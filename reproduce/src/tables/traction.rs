@@ -422,3 +422,50 @@ pub fn appendix_vii_b() -> Result<Reproduced, ReproduceError> {
         figures,
     })
 }
+
+/// Appendix VII-E: the peak longitudinal traction coefficient under side
+/// slip (and 6° spin), low-speed machine, 20 m/s, 70 °C, relative to the μ
+/// of the same fluid, P0 and k at zero spin and zero side slip. The report
+/// prints measurements only; the isothermal J+T peak is μ itself at every
+/// side slip and spin (J4 → 1 as ΔU/U grows), so its relative peak is 1, and
+/// the thermal contact's is [`crate::thermal::appendix_vii_e`]. The
+/// reference rows (zero spin, zero side slip: the model's inputs) and the
+/// tests whose P0, k have no zero-spin test are left out.
+pub fn appendix_vii_e() -> Result<Reproduced, ReproduceError> {
+    let peaks = crate::thermal::appendix_vii_e(None)?;
+    let rows = peaks
+        .iter()
+        .filter(|p| !p.is_reference)
+        .map(|p| Row {
+            series: format!(
+                "{} k={} P0={} GPa",
+                p.point.fluid, p.point.k, p.point.p0_gpa
+            ),
+            label: format!(
+                "{} {}° side slip {} %",
+                p.point.test, p.point.spin_deg, p.point.side_slip_pct
+            ),
+            x: p.point.side_slip_pct,
+            computed: 1.0,
+            printed: None,
+            measured: Some(p.point.mu / p.reference_mu),
+            tol: None,
+            thermal: Some(p.thermal / p.reference_mu),
+        })
+        .collect();
+    Ok(Reproduced {
+        table: TableResult {
+            id: "appendix-vii-e".into(),
+            title: "Appendix VII-E (peak under side slip and spin)".into(),
+            quantity: "peak longitudinal traction coefficient relative to the zero-spin, zero-side-slip μ of the same fluid, P0, k: isothermal J+T (1 at every side slip) against measured (-)".into(),
+            deviation: Deviation::Absolute,
+            rows,
+            tolerance: None,
+            missing: vec![
+                "printed theory: the report prints measured peaks only (no traces, no theory)".into(),
+            ],
+            figure: FigureKind::None,
+        },
+        figures: Vec::new(),
+    })
+}
