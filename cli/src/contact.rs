@@ -39,7 +39,7 @@ use traction_contact::{
     Limit, Model, Modulus, OperatingState, Options, Properties, Thermal, TractionContact,
 };
 
-use crate::error::CliError;
+use crate::error::{CliError, chain};
 use crate::table::{Table, TableWriter, fmt_f64, output_headers};
 
 /// Input columns every row needs.
@@ -227,7 +227,7 @@ pub fn report_fluid(name: &str, rule: EnvelopeRule, spin_peak: bool) -> Result<F
             ));
         }
     };
-    Ok(f.map_err(|e| e.to_string())?.use_spin_peak(spin_peak))
+    Ok(f.map_err(|e| chain(&e))?.use_spin_peak(spin_peak))
 }
 
 /// Arguments of `traction contact`.
@@ -291,7 +291,7 @@ fn solve_row(
             match table.opt_f64(row, "mu_spin")? {
                 Some(s) => f
                     .with_spin_peak(s)
-                    .map_err(|e| table.cell_error(row, "mu_spin", e.to_string()))?,
+                    .map_err(|e| table.cell_error(row, "mu_spin", chain(&e)))?,
                 None => f,
             }
         }

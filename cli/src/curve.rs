@@ -12,7 +12,7 @@ use clap::{Args, ValueEnum};
 use traction_contact::{Body, Fluid, OperatingState, TractionContact};
 
 use crate::contact::{ModelOptions, report_fluid};
-use crate::error::CliError;
+use crate::error::{CliError, chain};
 use crate::table::{TableWriter, fmt_f64, radius};
 use traction_hertz::Range;
 
@@ -179,9 +179,13 @@ pub fn run(args: CurveArgs) -> Result<(), CliError> {
         };
         let state = OperatingState::new(load, args.u, du, dv, args.omega, args.theta)
             .map_err(CliError::model)?;
-        let e = contact
-            .evaluate(&state)
-            .map_err(|e| CliError::Model(format!("point {} (slip ratio {ratio}): {e}", i + 1)))?;
+        let e = contact.evaluate(&state).map_err(|e| {
+            CliError::Model(format!(
+                "point {} (slip ratio {ratio}): {}",
+                i + 1,
+                chain(&e)
+            ))
+        })?;
         let mut cells: Vec<String> = [ratio, args.u, du, dv, args.omega]
             .into_iter()
             .map(fmt_f64)

@@ -86,21 +86,11 @@ pub fn cli_words(text: &str) -> String {
         .fold(text.to_string(), |t, (api, cli)| t.replace(api, cli))
 }
 
-/// An error and its sources joined by `": "`, as the command prints it, in the
-/// CLI's words ([`cli_words`]). A source whose text the message already ends
-/// with is not repeated.
+/// An error and its sources joined by `": "`
+/// ([`traction_contact::error_chain`]), as the command prints it, in the CLI's
+/// words ([`cli_words`]).
 pub fn chain(e: &dyn std::error::Error) -> String {
-    let mut text = e.to_string();
-    let mut source = e.source();
-    while let Some(s) = source {
-        let part = s.to_string();
-        if !text.ends_with(&part) {
-            text.push_str(": ");
-            text.push_str(&part);
-        }
-        source = s.source();
-    }
-    cli_words(&text)
+    cli_words(&traction_contact::error_chain(e))
 }
 
 #[cfg(test)]

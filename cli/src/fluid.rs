@@ -16,7 +16,7 @@
 use clap::Args;
 use traction_fluids::{Fluid, FluidError, FluidName, Policy, Quantity, Query, TemperatureForm};
 
-use crate::error::CliError;
+use crate::error::{CliError, chain};
 use crate::fit::{FluidArg, TemperatureArg};
 use crate::table::{Table, TableWriter, fmt_f64, output_headers};
 
@@ -116,9 +116,9 @@ pub fn run(args: FluidArgs) -> Result<(), CliError> {
                         "{quantity} = {value} is outside the data envelope [{min}, {max}] of \
                          {correlation}; use --extrapolate to get a flagged extrapolation"
                     ),
-                    e => e.to_string(),
+                    e => chain(&e),
                 };
-                table.row_error(row, format!("{}: {message}", quantity_name(quantity)))
+                table.row_message(row, format!("{}: {message}", quantity_name(quantity)))
             })
         };
         let m = ev(Quantity::Slope, &q0)?;

@@ -68,7 +68,7 @@ use crate::contact::{
     ComplianceArg, EnvelopeArg, LimitArg, ModelArg, ModelOptions, ModulusArg, report_fluid,
     thermal_columns,
 };
-use crate::error::CliError;
+use crate::error::{CliError, chain};
 use crate::table::{Table, TableWriter, fmt_f64, output_headers};
 
 /// Input columns every row needs (as `traction contact`).
@@ -354,25 +354,22 @@ impl Point {
             (Some(row), report) => {
                 options.thermal = Some(self.thermal_of(row, trial)?);
                 match report {
-                    Some(f) => f
-                        .clone()
-                        .with_inlet_values(m, mu)
-                        .map_err(|e| e.to_string())?,
-                    None => Fluid::constant(m, mu).map_err(|e| e.to_string())?,
+                    Some(f) => f.clone().with_inlet_values(m, mu).map_err(|e| chain(&e))?,
+                    None => Fluid::constant(m, mu).map_err(|e| chain(&e))?,
                 }
             }
-            (None, _) => Fluid::constant(m, mu).map_err(|e| e.to_string())?,
+            (None, _) => Fluid::constant(m, mu).map_err(|e| chain(&e))?,
         };
         let fluid = match mu_spin {
-            Some(s) => fluid.with_spin_peak(s).map_err(|e| e.to_string())?,
+            Some(s) => fluid.with_spin_peak(s).map_err(|e| chain(&e))?,
             None => fluid,
         };
         let contact = TractionContact::new(&self.body1, &self.body2, fluid, options)
-            .map_err(|e| e.to_string())?;
+            .map_err(|e| chain(&e))?;
         let mut state = self.state;
         state.slip += trial.slip_offset * state.rolling_speed;
         state.side_slip += trial.side_slip_offset * state.rolling_speed;
-        contact.evaluate(&state).map_err(|e| e.to_string())
+        contact.evaluate(&state).map_err(|e| chain(&e))
     }
 
     /// The row's thermal model under `trial`: fitted coefficients replace
@@ -461,7 +458,7 @@ impl Problem<'_> {
             .enumerate()
             .map(|(i, p)| {
                 p.evaluate(&trial)
-                    .map_err(|e| self.table.row_error(i, e).to_string())
+                    .map_err(|e| self.table.row_message(i, e).to_string())
             })
             .collect()
     }

@@ -11,7 +11,7 @@
 
 use std::io::{Read, Write};
 
-use crate::error::CliError;
+use crate::error::{CliError, chain};
 
 /// A radius of curvature as the CLI takes it: 0 and ±inf both mean a flat
 /// profile (the FMU's convention, docs/decisions/0014), returned as the
@@ -133,13 +133,19 @@ impl Table {
         }
     }
 
-    /// An error about a whole row (the model rejected it); `row` is 0-based.
-    pub fn row_error(&self, row: usize, message: impl std::fmt::Display) -> CliError {
+    /// The model rejected a whole row: `error` and its sources ([`chain`]);
+    /// `row` is 0-based.
+    pub fn row_error(&self, row: usize, error: impl std::error::Error) -> CliError {
+        self.row_message(row, chain(&error))
+    }
+
+    /// An error about a whole row, in words; `row` is 0-based.
+    pub fn row_message(&self, row: usize, message: impl Into<String>) -> CliError {
         CliError::Row {
             source_name: self.source_name.clone(),
             row: row + 1,
             line: self.lines.get(row).copied().unwrap_or(0),
-            message: message.to_string(),
+            message: message.into(),
         }
     }
 

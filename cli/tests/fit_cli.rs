@@ -4,6 +4,9 @@
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
 
+use traction_reproduce::tables::appendix_iii::{ERR_MEAN_TOL, ERR_STD_TOL};
+use traction_testkit::Table;
+
 fn run(args: &[&str], stdin: Option<&str>) -> Output {
     let mut c = Command::new(env!("CARGO_BIN_EXE_traction"))
         .args(args)
@@ -20,25 +23,21 @@ fn run(args: &[&str], stdin: Option<&str>) -> Output {
     c.wait_with_output().unwrap()
 }
 
-fn csv_map(out: &Output) -> Vec<(String, f64)> {
+/// The `name,value` output of a successful run.
+fn csv_map(out: &Output) -> Table {
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let s = String::from_utf8(out.stdout.clone()).unwrap();
-    let mut lines = s.lines();
-    assert_eq!(lines.next(), Some("name,value"));
-    lines
-        .map(|l| {
-            let (n, v) = l.split_once(',').unwrap();
-            (n.to_string(), v.parse().unwrap())
-        })
-        .collect()
+    let t = Table::parse(&String::from_utf8(out.stdout.clone()).unwrap());
+    assert_eq!(t.header, ["name", "value"]);
+    t
 }
 
-fn get(rows: &[(String, f64)], name: &str) -> f64 {
-    rows.iter().find(|(n, _)| n == name).unwrap().1
+/// The value of `name`.
+fn get(t: &Table, name: &str) -> f64 {
+    t.f64(t.row_where("name", name), "value")
 }
 
 #[test]
@@ -57,7 +56,7 @@ fn csv_rows_are_exactly_the_documented_ones() {
         ],
         None,
     ));
-    let names: Vec<&str> = r.iter().map(|(n, _)| n.as_str()).collect();
+    let names: Vec<&str> = r.rows.iter().map(|row| row[0].as_str()).collect();
     let mut expect: Vec<String> = (1..=16).map(|j| format!("C{j}")).collect();
     expect.extend(
         [
@@ -78,16 +77,16 @@ fn csv_rows_are_exactly_the_documented_ones() {
         ],
         None,
     ));
-    assert_eq!(r.len(), 32 + 8);
-    assert_eq!(r[36].0, "mean_Z");
+    assert_eq!(r.rows.len(), 32 + 8);
+    assert_eq!(r.get(36, "name"), "mean_Z");
     assert_eq!(get(&r, "n"), 152.0);
 }
 
 #[test]
 fn reproduces_appendix_iii_a_and_iii_e_statistics() {
-    // Printed III-A: mean −0.5285 %, std 10.742 %; III-E: −0.458 %, 9.870 %.
-    // Tolerances as in tests/tests/regression_appendix_iii.rs: 0.005 %-points
-    // on the mean, 0.1 % relative on the standard deviation.
+    // The printed III-A and III-E statistics (fluids/data) with the
+    // reproduction's tolerances.
+    let printed = |a: &str| traction_fluids::printed_result(a).unwrap();
     let a = csv_map(&run(
         &[
             "fit",
@@ -104,10 +103,11 @@ fn reproduces_appendix_iii_a_and_iii_e_statistics() {
         ],
         None,
     ));
-    assert!((get(&a, "err_mean") + 0.5285).abs() < 0.005);
-    assert!((get(&a, "err_std") / 10.742 - 1.0).abs() < 1e-3);
+    let pa = printed("III-A");
+    assert!((get(&a, "err_mean") - pa.err_mean).abs() < ERR_MEAN_TOL);
+    assert!((get(&a, "err_std") / pa.err_std - 1.0).abs() < ERR_STD_TOL);
     assert_eq!(get(&a, "n"), 73.0);
-    // Data means of III-A: printed Ū 45.890 m/s, P̄0 1.369 GPa (printed "1.309", OCR).
+    // Data means of III-A against the printed Ū, P̄0 (3 decimals: half a unit).
     let d = csv_map(&run(
         &[
             "fit",
@@ -122,8 +122,8 @@ fn reproduces_appendix_iii_a_and_iii_e_statistics() {
         ],
         None,
     ));
-    assert!((get(&d, "mean_U") - 45.890).abs() < 5e-4);
-    assert!((get(&d, "mean_P0") - 1.369).abs() < 5e-4);
+    assert!((get(&d, "mean_U") - pa.means.speed).abs() < 5e-4);
+    assert!((get(&d, "mean_P0") - pa.means.p0_gpa).abs() < 5e-4);
     let e = csv_map(&run(
         &[
             "fit",
@@ -138,8 +138,9 @@ fn reproduces_appendix_iii_a_and_iii_e_statistics() {
         ],
         None,
     ));
-    assert!((get(&e, "err_mean") + 0.458).abs() < 0.005);
-    assert!((get(&e, "err_std") / 9.870 - 1.0).abs() < 1e-3);
+    let pe = printed("III-E");
+    assert!((get(&e, "err_mean") - pe.err_mean).abs() < ERR_MEAN_TOL);
+    assert!((get(&e, "err_std") / pe.err_std - 1.0).abs() < ERR_STD_TOL);
 }
 
 #[test]

@@ -3,39 +3,70 @@
 mod common;
 use common::run;
 
-fn col(header: &str, line: &str, name: &str) -> String {
-    let i = header.split(',').position(|h| h == name).expect("column");
-    line.split(',').nth(i).expect("cell").to_string()
+use traction_reproduce::tables::spin::C2_TOL;
+use traction_testkit::Table;
+
+/// The one data row of a CSV output.
+fn only_row(out: &str) -> (Table, usize) {
+    let t = Table::parse(out);
+    assert_eq!(t.rows.len(), 1, "{out}");
+    (t, 0)
 }
 
 #[test]
 fn twin_disc_reproduces_table_2_5_and_2_6() {
-    // Low-speed machine, k = 1, 6°, C = 0.170e-12 (Table 2-2), P0 = 1.9 GPa,
-    // trace 80062306 (m = 53.9, μ = .096, Table 4-1).
-    let (ok, out, err) = run(
-        &["kinematics", "--input", "-"],
-        "label,alpha,ry,e,c,k,p0,m,mu\nLS,0.10471975511965977,0.0125,0.0125,0.170e-12,1,1.9e9,53.9,0.096\n",
+    // Low-speed machine, k = 1, 6° (Tables 2-2, 2-4, 2-5), trace 80062306 of
+    // Table 2-6 with its m, μ of Table 4-1: all read from fluids/data.
+    let t = traction_fluids::spin_tests()
+        .unwrap()
+        .into_iter()
+        .find(|t| t.machine.name == "LS k=1")
+        .unwrap();
+    let tables = traction_fluids::main_text_tables().unwrap();
+    let printed = |table: &str| {
+        tables
+            .iter()
+            .find(|r| r.table == table && r.trace == "80062306")
+            .unwrap()
+            .values
+    };
+    let [_, Some(p0_gpa), _, _, _, Some(z_printed), ..] = printed("2-6") else {
+        panic!("Table 2-6 row of 80062306");
+    };
+    let [.., Some(m), Some(mu), _] = printed("4-1") else {
+        panic!("Table 4-1 row of 80062306");
+    };
+    let m_row = &t.machine;
+    let input = format!(
+        "label,alpha,ry,e,c,k,p0,m,mu\nLS,{},{},{},{},{},{},{m},{mu}\n",
+        t.spin_deg.to_radians(),
+        m_row.ry1_mm * 1e-3,
+        t.e_mm * 1e-3,
+        m_row.c_e12_m_per_pa.value * 1e-12,
+        m_row.k,
+        p0_gpa * 1e9,
     );
+    let (ok, out, err) = run(&["kinematics", "--input", "-"], &input);
     assert!(ok, "{err}");
-    let mut lines = out.lines();
-    let h = lines.next().unwrap();
     assert!(
-        h.starts_with("label,alpha,ry,e,c,k,p0,m,mu,rolling_radius,omega_per_u"),
-        "{h}"
+        out.starts_with("label,alpha,ry,e,c,k,p0,m,mu,rolling_radius,omega_per_u"),
+        "{out}"
     );
-    let l = lines.next().unwrap();
-    let c2: f64 = col(h, l, "c_double_prime").parse().unwrap();
-    // Table 2-5 prints .713e-3 1/GPa; computed 0.71275e-3 (0.04 %), 1 % as in the golden test.
-    assert!((c2 * 1e9 / 0.713e-3 - 1.0).abs() < 0.01, "{c2}");
-    let z: f64 = col(h, l, "z").parse().unwrap();
-    // Table 2-6 prints .00135 (3 digits): half a unit of the last digit.
-    assert!((z - 0.00135).abs() <= 0.000005, "{z}");
+    let (o, r) = only_row(&out);
+    let c2 = o.f64(r, "c_double_prime");
+    // Computed 0.71275e-3 1/GPa against the printed .713e-3 (0.04 %), within
+    // the Table 2-5 tolerance.
+    let c2_printed = t.spin_factor.c_table_2_5;
+    assert!((c2 * 1e9 / c2_printed - 1.0).abs() < C2_TOL, "{c2}");
+    let z = o.f64(r, "z");
+    // Table 2-6 prints Z to 3 digits (.00135): half a unit of the last digit.
+    assert!((z - z_printed).abs() <= 0.000005, "{z}");
     // No beta column: side_slip_ratio and j2 are empty.
-    assert_eq!(col(h, l, "side_slip_ratio"), "");
-    assert_eq!(col(h, l, "j2"), "");
-    let j3: f64 = col(h, l, "j3").parse().unwrap();
+    assert_eq!(o.get(r, "side_slip_ratio"), "");
+    assert_eq!(o.get(r, "j2"), "");
+    let j3 = o.f64(r, "j3");
     // J3 = (3π/8)(m/μ)Z√k with the same Z: exact arithmetic, 1e-12.
-    let expect = 3.0 * std::f64::consts::PI / 8.0 * (53.9 / 0.096) * z;
+    let expect = 3.0 * std::f64::consts::PI / 8.0 * (m / mu) * z;
     assert!((j3 / expect - 1.0).abs() < 1e-12);
 }
 
@@ -63,16 +94,14 @@ fn general_form_two_cylinders() {
         &format!("{header}\n{row}\n"),
     );
     assert!(ok, "{err}");
-    let mut lines = out.lines();
-    let h = lines.next().unwrap();
-    let l = lines.next().unwrap();
-    let f = |n: &str| col(h, l, n).parse::<f64>().unwrap();
+    let (o, r) = only_row(&out);
+    let f = |n: &str| o.f64(r, n);
     // Exact arithmetic on representable inputs: 1e-12.
     assert!((f("u") - 9.9).abs() < 1e-12);
     assert!((f("du") - 0.2).abs() < 1e-12);
     assert!((f("du_u") - 0.2 / 9.9).abs() < 1e-12);
     assert_eq!(f("omega"), 0.0);
-    assert_eq!(col(h, l, "epsilon"), "");
+    assert_eq!(o.get(r, "epsilon"), "");
     // U = 0 is an error naming the rolling speed.
     let row0 = "0,-400,0,0,0,0.025,0,-200,0,0,0,-0.05,0,0,0,0,0,1,1,0,0,1e-4,2e-4";
     let (ok, _, err) = run(&["kinematics"], &format!("{header}\n{row0}\n"));

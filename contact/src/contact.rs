@@ -6,13 +6,13 @@ use std::f64::consts::PI;
 use traction_hertz::{Body, Geometry};
 use traction_rheology::Inputs;
 
-use crate::error::{ContactError, check};
+use crate::error::ContactError;
 use crate::fluid::correlate;
 use crate::map_cache::MapCache;
 use crate::thermal::{self, Film};
 use crate::{
-    Accuracy, Compliance, Direction, Evaluation, Fluid, MAP_TOL, Map, MapStats, Model,
-    OperatingState, Options, OutsideEnvelope, Properties, Regime,
+    Accuracy, Compliance, Direction, Evaluation, Fluid, Map, MapStats, Model, OperatingState,
+    Options, OutsideEnvelope, Properties, ROLLING_SPEED_FLOOR_RANGE, Regime,
 };
 
 /// The traction contact, built once from the bodies, the fluid and the options.
@@ -77,12 +77,7 @@ impl TractionContact {
         options: Options,
     ) -> Result<Self, ContactError> {
         fluid.validate()?;
-        check(
-            "rolling-speed floor U_f (m/s)",
-            options.rolling_speed_floor,
-            (1e-9..=1.0).contains(&options.rolling_speed_floor),
-            "in [1e-9, 1] m/s",
-        )?;
+        ROLLING_SPEED_FLOOR_RANGE.check("rolling-speed floor U_f", options.rolling_speed_floor)?;
         if let Some(th) = options.thermal {
             th.validate()?;
             let spin_peak = match &fluid {
@@ -122,12 +117,8 @@ impl TractionContact {
         }
         let geometry = Geometry::new(body1, body2)?;
         let k = geometry.k;
-        check(
-            "aspect ratio k = b/a of the contact",
-            k,
-            (traction_rheology::K_MIN..=traction_rheology::K_MAX).contains(&k),
-            "in [0.01, 100] (the traction model's range)",
-        )?;
+        // The traction model's range, checked here to name the contact's k.
+        traction_rheology::ASPECT_RATIO_RANGE.check("aspect ratio k = b/a of the contact", k)?;
         let discs = match options.compliance {
             Compliance::Off => None,
             Compliance::Discs { material, .. } => {
@@ -301,7 +292,7 @@ impl TractionContact {
         self.options.map
             && self.options.model == Model::ElasticPlastic
             && self.options.properties == Properties::default()
-            && (MAP_TOL.0..=MAP_TOL.1).contains(&self.options.accuracy.tol())
+            && traction_rheology::map::TOLERANCE_RANGE.contains(self.options.accuracy.tol())
     }
 
     /// Run `f` on the contact's map (built empty on first use).

@@ -8,11 +8,14 @@ use traction_rheology::RheologyError;
 
 /// Why a traction contact could not be built or evaluated. Every variant names
 /// the offending quantity and its valid range; the lower crates' errors are
-/// wrapped unchanged.
+/// wrapped unchanged as the [`source`](std::error::Error::source) of a variant
+/// whose message names only the context (show a user the whole chain:
+/// [`error_chain`]).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum ContactError {
-    /// An input of this crate is NaN, infinite or outside its valid range.
+    /// An input of this crate is missing, or invalid in combination with
+    /// another input (the message says what is required).
     #[error("{quantity} = {value} is out of range: must be {valid}")]
     OutOfRange {
         /// Which quantity, with its unit (e.g. `load N (normal load, N)`).
@@ -22,19 +25,24 @@ pub enum ContactError {
         /// The valid range, in words.
         valid: &'static str,
     },
+    /// An input of this crate is NaN, infinite or outside its valid range
+    /// (one of the crate's `*_RANGE` constants; the message names the
+    /// quantity, the value and the range).
+    #[error(transparent)]
+    Range(#[from] traction_range::OutOfRange),
     /// The Hertz contact could not be computed (radii, materials, load).
-    #[error("Hertz contact: {0}")]
+    #[error("Hertz contact")]
     Hertz(#[from] HertzError),
     /// The traction model rejected its dimensionless inputs.
-    #[error("traction model: {0}")]
+    #[error("traction model")]
     Rheology(#[from] RheologyError),
     /// The disc-compliance correction failed (Kalker table range, singular conversion).
-    #[error("disc compliance: {0}")]
+    #[error("disc compliance")]
     Compliance(#[from] ComplianceError),
     /// A report fluid's correlation failed: outside its data envelope under
     /// [`crate::EnvelopeRule::Strict`] (names the quantity, value and data
     /// range), near the report's θ' singularity, or non-physical.
-    #[error("fluid correlation: {0}")]
+    #[error("fluid correlation")]
     Fluid(#[from] FluidError),
     /// The thermal model's temperature fixed point failed: no convergence,
     /// a runaway (no fixed point below the accepted rise), or a non-finite
@@ -47,23 +55,28 @@ pub enum ContactError {
         temperature_rise: f64,
     },
     /// The body motion could not be turned into contact kinematics.
-    #[error("kinematics: {0}")]
+    #[error("kinematics")]
     Kinematics(#[from] KinematicsError),
 }
 
-pub(crate) fn check(
-    quantity: &'static str,
-    value: f64,
-    ok: bool,
-    valid: &'static str,
-) -> Result<f64, ContactError> {
-    if ok && value.is_finite() {
-        Ok(value)
-    } else {
-        Err(ContactError::OutOfRange {
-            quantity,
-            value,
-            valid,
-        })
+/// An error and its sources joined by `": "`, as the workspace's programs show
+/// it to a user (the CLI, the FMUs' loggers, the reproduction), e.g. `Hertz
+/// contact: rx1 (...) = 0 is out of range: must be ...`.
+///
+/// Every wrapping error of the workspace names only its context and keeps the
+/// cause as its source (docs/decisions/0018), so each message appears once. A
+/// source whose text the message already ends with (errors of other libraries
+/// that print their cause too) is not repeated.
+pub fn error_chain(e: &dyn std::error::Error) -> String {
+    let mut text = e.to_string();
+    let mut source = e.source();
+    while let Some(s) = source {
+        let part = s.to_string();
+        if !text.ends_with(&part) {
+            text.push_str(": ");
+            text.push_str(&part);
+        }
+        source = s.source();
     }
+    text
 }

@@ -2,8 +2,8 @@
 
 use std::sync::Arc;
 
-use crate::error::{ContactError, check};
-use crate::{MAX_SLOPE, MAX_TRACTION_COEFFICIENT};
+use crate::error::ContactError;
+use crate::{Range, SLOPE_RANGE, TRACTION_COEFFICIENT_RANGE};
 
 /// The fluid: how the traction slope m and peak traction coefficient μ of the
 /// contact are obtained.
@@ -124,7 +124,8 @@ impl Fluid {
         })
     }
 
-    /// User m and μ; checks 0 < m ≤ [`MAX_SLOPE`], 0 < μ ≤ [`MAX_TRACTION_COEFFICIENT`].
+    /// User m and μ; checks m in [`SLOPE_RANGE`] and μ in
+    /// [`TRACTION_COEFFICIENT_RANGE`].
     pub fn constant(slope: f64, peak: f64) -> Result<Fluid, ContactError> {
         let f = Fluid::Constant {
             slope,
@@ -191,8 +192,8 @@ impl Fluid {
     }
 
     /// For a report fluid: use the user's m and μ at the inlet temperature
-    /// instead of the correlations' values (0 < m ≤ [`MAX_SLOPE`],
-    /// 0 < μ ≤ [`MAX_TRACTION_COEFFICIENT`]); the correlations then supply the
+    /// instead of the correlations' values (m in [`SLOPE_RANGE`], μ in
+    /// [`TRACTION_COEFFICIENT_RANGE`]); the correlations then supply the
     /// temperature dependence of the thermal model only. Other fluids: error.
     pub fn with_inlet_values(self, slope: f64, peak: f64) -> Result<Fluid, ContactError> {
         match self {
@@ -226,25 +227,10 @@ impl Fluid {
                 peak,
                 spin_peak,
             } => {
-                check(
-                    "traction slope m",
-                    slope,
-                    slope > 0.0 && slope <= MAX_SLOPE,
-                    "in (0, 1e6]",
-                )?;
-                check(
-                    "peak traction coefficient μ",
-                    peak,
-                    peak > 0.0 && peak <= MAX_TRACTION_COEFFICIENT,
-                    "in (0, 10]",
-                )?;
+                SLOPE_RANGE.check("traction slope m", slope)?;
+                TRACTION_COEFFICIENT_RANGE.check("peak traction coefficient μ", peak)?;
                 if let Some(s) = spin_peak {
-                    check(
-                        "spin-peak traction coefficient μ_s",
-                        s,
-                        s > 0.0 && s <= MAX_TRACTION_COEFFICIENT,
-                        "in (0, 10]",
-                    )?;
+                    TRACTION_COEFFICIENT_RANGE.check("spin-peak traction coefficient μ_s", s)?;
                 }
             }
             Fluid::Physical {
@@ -252,24 +238,12 @@ impl Fluid {
                 limiting_stress,
                 film_thickness,
             } => {
-                check(
-                    "fluid shear modulus Ḡ (Pa)",
-                    shear_modulus,
-                    shear_modulus > 0.0,
-                    "finite and > 0 Pa",
-                )?;
-                check(
-                    "limiting shear stress τ̄ (Pa)",
-                    limiting_stress,
-                    limiting_stress > 0.0,
-                    "finite and > 0 Pa",
-                )?;
-                check(
-                    "film thickness h (m)",
-                    film_thickness,
-                    film_thickness > 0.0,
-                    "finite and > 0 m",
-                )?;
+                let pa = Range::POSITIVE.with_unit("Pa");
+                pa.check("fluid shear modulus Ḡ", shear_modulus)?;
+                pa.check("limiting shear stress τ̄", limiting_stress)?;
+                Range::POSITIVE
+                    .with_unit("m")
+                    .check("film thickness h", film_thickness)?;
             }
             Fluid::Report { at_inlet, .. } => {
                 if let Some(v) = at_inlet {

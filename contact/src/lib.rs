@@ -152,22 +152,28 @@ mod state;
 pub mod thermal;
 
 pub use contact::TractionContact;
-pub use error::ContactError;
+pub use error::{ContactError, error_chain};
 pub use evaluation::{Evaluation, Regime};
 pub use fluid::{EnvelopeRule, Fluid, InletValues, OutsideEnvelope};
 pub use options::{Compliance, Options};
 pub use regime::inverse_psi;
 pub use state::{OperatingState, OperatingStateBuilder};
 pub use thermal::{Film, Thermal};
-pub use traction_compliance::{Direction, DiscMaterial};
+pub use traction_compliance::{Direction, DiscMaterial, KALKER_POISSON_RANGE};
 pub use traction_hertz::Body;
+pub use traction_kinematics::ANGLE_RANGE;
 pub use traction_rheology::map::{Map, MapStats};
-pub use traction_rheology::{Accuracy, Limit, Model, Modulus, Properties};
+pub use traction_rheology::{
+    Accuracy, DEBORAH_RANGE, Limit, Model, Modulus, Properties, REFERENCE_STRESS_RANGE,
+    TOLERANCE_RANGE,
+};
 
-/// Accuracy range in which [`Options::map`] applies (the map's range).
-const MAP_TOL: (f64, f64) = (1e-4, 1e-2);
+pub use traction_range::{OutOfRange, Range};
+
 /// Default rolling-speed floor U_f of the J groups, m/s (see the crate docs).
 pub const DEFAULT_ROLLING_SPEED_FLOOR: f64 = 1e-3;
+/// Valid rolling-speed floors U_f ([`Options::rolling_speed_floor`]).
+pub const ROLLING_SPEED_FLOOR_RANGE: Range = Range::closed(1e-9, 1.0).with_unit("m/s");
 /// Largest accepted |U|, |ΔU|, |ΔV| (m/s): beyond any machine; keeps every
 /// output (including the loss) finite.
 pub const MAX_SPEED: f64 = 1e6;
@@ -179,6 +185,20 @@ pub const MAX_LOAD: f64 = 1e12;
 pub const MAX_SLOPE: f64 = 1e6;
 /// Largest accepted traction coefficient μ (dimensionless).
 pub const MAX_TRACTION_COEFFICIENT: f64 = 10.0;
+/// Valid normal loads N: [0, [`MAX_LOAD`]] (0: the contact is open).
+pub const LOAD_RANGE: Range = Range::closed(0.0, MAX_LOAD).with_unit("N");
+/// Valid rolling speed U, slip ΔU and side slip ΔV: |v| ≤ [`MAX_SPEED`].
+pub const SPEED_RANGE: Range = Range::closed(-MAX_SPEED, MAX_SPEED).with_unit("m/s");
+/// Valid spin ω: |ω| ≤ [`MAX_SPIN`].
+pub const SPIN_RANGE: Range = Range::closed(-MAX_SPIN, MAX_SPIN).with_unit("rad/s");
+/// Valid inlet temperatures: above absolute zero.
+pub const INLET_TEMPERATURE_RANGE: Range = Range::greater_than(-273.15).with_unit("°C");
+/// Valid traction slopes m of a user fluid: (0, [`MAX_SLOPE`]].
+pub const SLOPE_RANGE: Range = Range::open(0.0, MAX_SLOPE).closed_above();
+/// Valid traction coefficients μ, μ_s of a user fluid: (0,
+/// [`MAX_TRACTION_COEFFICIENT`]].
+pub const TRACTION_COEFFICIENT_RANGE: Range =
+    Range::open(0.0, MAX_TRACTION_COEFFICIENT).closed_above();
 /// The report's 5 % criterion for the regions of App. IV figure 14.
 pub const REGIME_TOLERANCE: f64 = 0.05;
 #[cfg(test)]

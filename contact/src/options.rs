@@ -38,7 +38,8 @@ pub struct Options {
     pub accuracy: Accuracy,
     /// Disc-compliance correction of the slope.
     pub compliance: Compliance,
-    /// Rolling-speed floor U_f of the J groups, m/s, in [1e-9, 1] (see crate docs).
+    /// Rolling-speed floor U_f of the J groups, m/s, in
+    /// [`ROLLING_SPEED_FLOOR_RANGE`](crate::ROLLING_SPEED_FLOOR_RANGE) (see crate docs).
     pub rolling_speed_floor: f64,
     /// Classify the regime of App. IV figure 14 (costs a rigid/plastic
     /// evaluation when spin is present).
@@ -53,8 +54,10 @@ pub struct Options {
     /// interpolation map ([`traction_rheology::map::Map`], one per contact, at
     /// the same accuracy) instead of integrating the strips at every call.
     /// Used when the map applies: the default property distribution, the
-    /// accuracy in [1e-4, 1e-2] and gy = 1 (no compliance correction; with it
-    /// gy = m_y/m_x changes with the load); otherwise direct. Pays off for
+    /// accuracy in the map's range
+    /// ([`traction_rheology::map::TOLERANCE_RANGE`]) and gy = 1 (no
+    /// compliance correction; with it gy = m_y/m_x changes with the load);
+    /// otherwise direct. Pays off for
     /// many evaluations in a region of (J1, J2, J3) — a co-simulation near an
     /// operating point: ≈ 0.2 µs instead of 10–700 µs — and costs up to tens of
     /// milliseconds when a new region is first entered. Results depend only

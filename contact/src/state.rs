@@ -2,8 +2,8 @@
 
 use traction_kinematics::ContactKinematics;
 
-use crate::error::{ContactError, check};
-use crate::{MAX_LOAD, MAX_SPEED, MAX_SPIN};
+use crate::error::ContactError;
+use crate::{INLET_TEMPERATURE_RANGE, LOAD_RANGE, SPEED_RANGE, SPIN_RANGE};
 
 /// An operating state of the contact (SI units, lab frame, signs as in the crate docs).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -44,8 +44,8 @@ impl OperatingState {
 
     /// A checked state from positional values (load N, U, ΔU, ΔV, ω,
     /// θ °C); [`OperatingState::builder`] names them. Checks:
-    /// 0 ≤ load ≤ [`MAX_LOAD`]; |U|, |ΔU|, |ΔV| ≤ [`MAX_SPEED`];
-    /// |ω| ≤ [`MAX_SPIN`]; θ finite and above −273.15 °C.
+    /// load in [`LOAD_RANGE`]; U, ΔU, ΔV in [`SPEED_RANGE`]; ω in
+    /// [`SPIN_RANGE`]; θ in [`INLET_TEMPERATURE_RANGE`].
     pub fn new(
         load: f64,
         rolling_speed: f64,
@@ -85,28 +85,12 @@ impl OperatingState {
 
     /// Check the ranges (the fields are public, so [`TractionContact::evaluate`](crate::TractionContact::evaluate) checks again).
     pub fn validate(&self) -> Result<(), ContactError> {
-        check(
-            "load N (normal load, N)",
-            self.load,
-            self.load >= 0.0 && self.load <= MAX_LOAD,
-            "in [0, 1e12] N",
-        )?;
-        let speed = |q, v: f64| check(q, v, v.abs() <= MAX_SPEED, "finite, |value| ≤ 1e6 m/s");
-        speed("rolling speed U (m/s)", self.rolling_speed)?;
-        speed("slip ΔU (m/s)", self.slip)?;
-        speed("side slip ΔV (m/s)", self.side_slip)?;
-        check(
-            "spin ω (rad/s)",
-            self.spin,
-            self.spin.abs() <= MAX_SPIN,
-            "finite, |ω| ≤ 1e9 rad/s",
-        )?;
-        check(
-            "inlet temperature θ (°C)",
-            self.inlet_temperature_celsius,
-            self.inlet_temperature_celsius > -273.15,
-            "finite and above −273.15 °C",
-        )?;
+        LOAD_RANGE.check("load N (normal load)", self.load)?;
+        SPEED_RANGE.check("rolling speed U", self.rolling_speed)?;
+        SPEED_RANGE.check("slip ΔU", self.slip)?;
+        SPEED_RANGE.check("side slip ΔV", self.side_slip)?;
+        SPIN_RANGE.check("spin ω", self.spin)?;
+        INLET_TEMPERATURE_RANGE.check("inlet temperature θ", self.inlet_temperature_celsius)?;
         Ok(())
     }
 }

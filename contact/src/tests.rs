@@ -589,7 +589,7 @@ fn inverse_psi_inverts_psi() {
 
 #[test]
 fn errors_name_the_quantity() {
-    let msg = |e: ContactError| e.to_string();
+    let msg = |e: ContactError| error_chain(&e);
     assert!(
         msg(OperatingState::new(-1.0, 1.0, 0.0, 0.0, 0.0, 20.0).unwrap_err()).contains("load N")
     );
@@ -617,7 +617,7 @@ fn errors_name_the_quantity() {
         Fluid::constant(30.0, 0.1).unwrap(),
         Options::default(),
     );
-    assert!(msg(e.unwrap_err()).starts_with("Hertz contact:"));
+    assert!(msg(e.unwrap_err()).starts_with("Hertz contact: "));
     // A contact too elongated for the traction model.
     let long = Body::steel(1.0, 1e-4);
     let e = TractionContact::new(
@@ -716,7 +716,7 @@ fn report_fluid_through_the_correlations_and_envelope() {
     assert_eq!((q.m_used, q.mu_used), (r.m_used, r.mu_used));
     // Start-up: U = 0 is outside the speed range of the data.
     let s0 = state(hz.load, 0.0, 0.02, 0.0, 0.0);
-    let e = c.evaluate(&s0).unwrap_err().to_string();
+    let e = error_chain(&c.evaluate(&s0).unwrap_err());
     assert!(
         e.contains("rolling speed U") && e.contains("envelope"),
         "{e}"
@@ -771,5 +771,35 @@ proptest! {
         prop_assert!((p.mz + q.mz).abs() <= tolm);
         prop_assert!((p.fx - r.fx).abs() <= tol && (p.fy + r.fy).abs() <= tol);
         prop_assert!((p.mz + r.mz).abs() <= tolm);
+    }
+}
+
+#[test]
+fn error_chain_prints_each_message_once() {
+    // One error of each wrapping kind: the message names the context, the
+    // cause is the source and appears once in the chain.
+    let hertz = TractionContact::new(
+        &Body::steel(0.0, 1.0),
+        &Body::steel(1.0, 1.0),
+        Fluid::constant(30.0, 0.1).unwrap(),
+        Options::default(),
+    )
+    .unwrap_err();
+    let c = TractionContact::new(
+        &Body::steel(0.05, 0.05),
+        &Body::steel(0.05, 0.05),
+        Fluid::santotrac_50(EnvelopeRule::Strict).unwrap(),
+        Options::default(),
+    )
+    .unwrap();
+    let fluid = c
+        .evaluate(&OperatingState::new(1000.0, 0.0, 0.02, 0.0, 0.0, 60.0).unwrap())
+        .unwrap_err();
+    for (e, context) in [(hertz, "Hertz contact"), (fluid, "fluid correlation")] {
+        assert_eq!(e.to_string(), context);
+        let cause = std::error::Error::source(&e).expect("a source").to_string();
+        let text = error_chain(&e);
+        assert_eq!(text, format!("{context}: {cause}"));
+        assert_eq!(text.matches(cause.as_str()).count(), 1, "{text}");
     }
 }

@@ -82,8 +82,7 @@ use std::f64::consts::PI;
 
 use traction_fluids::ThermalProperties;
 
-use crate::error::check;
-use crate::{Accuracy, ContactError, Fluid, OperatingState, TractionContact};
+use crate::{Accuracy, ContactError, Fluid, OperatingState, Range, TractionContact};
 
 /// Mean surface temperature rise over the ellipse in the high-Péclet limit,
 /// in units of q l/(K√Pe): `(4/(3√π))·(2/π)·B(½, 7/4)`.
@@ -186,77 +185,49 @@ pub const PEAK_REDUCED_SLIP: f64 = 3.0;
 
 /// Largest accepted temperature coefficient |β|, 1/K.
 pub const MAX_TEMPERATURE_COEFFICIENT: f64 = 1.0;
+/// Valid thermal conductivities of the discs and the fluid.
+pub const CONDUCTIVITY_RANGE: Range = Range::open(0.0, 1e4).closed_above().with_unit("W/(m·K)");
+/// Valid volumetric heat capacities of the discs.
+pub const HEAT_CAPACITY_RANGE: Range = Range::open(0.0, 1e8).closed_above().with_unit("J/(m³·K)");
+/// Valid film thicknesses.
+pub const FILM_THICKNESS_RANGE: Range = Range::open(0.0, 1e-3).closed_above().with_unit("m");
+/// Valid inlet viscosities η₀ of the Hamrock–Dowson film.
+pub const VISCOSITY_RANGE: Range = Range::open(0.0, 1e6).closed_above().with_unit("Pa·s");
+/// Valid pressure–viscosity coefficients α of the Hamrock–Dowson film.
+pub const PRESSURE_VISCOSITY_RANGE: Range = Range::closed(0.0, 1e-6).with_unit("1/Pa");
+/// Valid temperature coefficients β_μ, β_m: |β| ≤ [`MAX_TEMPERATURE_COEFFICIENT`].
+pub const TEMPERATURE_COEFFICIENT_RANGE: Range =
+    Range::closed(-MAX_TEMPERATURE_COEFFICIENT, MAX_TEMPERATURE_COEFFICIENT).with_unit("1/K");
 
 impl Thermal {
-    /// Check every given property: conductivities in (0, 1e4] W/(m·K), heat
-    /// capacity in (0, 1e8] J/(m³·K), film thickness in (0, 1e-3] m, η₀ in
-    /// (0, 1e6] Pa·s, α in [0, 1e-6] 1/Pa, temperature coefficients in [−1, 1] 1/K.
+    /// Check every given property against the `*_RANGE` constants of this
+    /// module.
     pub fn validate(&self) -> Result<(), ContactError> {
-        check(
-            "disc thermal conductivity K (W/(m·K))",
-            self.disc_conductivity,
-            self.disc_conductivity > 0.0 && self.disc_conductivity <= 1e4,
-            "in (0, 1e4] W/(m·K)",
-        )?;
-        check(
-            "disc volumetric heat capacity ρc (J/(m³·K))",
-            self.disc_heat_capacity,
-            self.disc_heat_capacity > 0.0 && self.disc_heat_capacity <= 1e8,
-            "in (0, 1e8] J/(m³·K)",
-        )?;
+        CONDUCTIVITY_RANGE.check("disc thermal conductivity K", self.disc_conductivity)?;
+        HEAT_CAPACITY_RANGE.check("disc volumetric heat capacity ρc", self.disc_heat_capacity)?;
         if let Some(k) = self.fluid_conductivity {
-            check(
-                "fluid thermal conductivity k_f (W/(m·K))",
-                k,
-                k > 0.0 && k <= 1e4,
-                "in (0, 1e4] W/(m·K)",
-            )?;
+            CONDUCTIVITY_RANGE.check("fluid thermal conductivity k_f", k)?;
         }
         match self.film {
             Film::Thickness(h) => {
-                check(
-                    "film thickness h (m)",
-                    h,
-                    h > 0.0 && h <= 1e-3,
-                    "in (0, 1e-3] m",
-                )?;
+                FILM_THICKNESS_RANGE.check("film thickness h", h)?;
             }
             Film::HamrockDowson {
                 viscosity,
                 pressure_viscosity,
             } => {
-                check(
-                    "inlet viscosity η₀ (Pa·s)",
-                    viscosity,
-                    viscosity > 0.0 && viscosity <= 1e6,
-                    "in (0, 1e6] Pa·s",
-                )?;
-                check(
-                    "pressure–viscosity coefficient α (1/Pa)",
-                    pressure_viscosity,
-                    (0.0..=1e-6).contains(&pressure_viscosity),
-                    "in [0, 1e-6] 1/Pa",
-                )?;
+                VISCOSITY_RANGE.check("inlet viscosity η₀", viscosity)?;
+                PRESSURE_VISCOSITY_RANGE
+                    .check("pressure–viscosity coefficient α", pressure_viscosity)?;
             }
             Film::FromFluid => {}
         }
         for (q, v) in [
-            (
-                "temperature coefficient β_μ of μ (1/K)",
-                self.mu_coefficient,
-            ),
-            (
-                "temperature coefficient β_m of m (1/K)",
-                self.slope_coefficient,
-            ),
+            ("temperature coefficient β_μ of μ", self.mu_coefficient),
+            ("temperature coefficient β_m of m", self.slope_coefficient),
         ] {
             if let Some(b) = v {
-                check(
-                    q,
-                    b,
-                    b.abs() <= MAX_TEMPERATURE_COEFFICIENT,
-                    "in [−1, 1] 1/K",
-                )?;
+                TEMPERATURE_COEFFICIENT_RANGE.check(q, b)?;
             }
         }
         Ok(())

@@ -24,7 +24,9 @@
 //!   Table 4-3 with its Table 4-2 source, [`table_4_3`]).
 //! * `machines.csv`, `shape_factors.csv`, `load_tests.csv`: the twin-disc
 //!   machines of Table 2-1 with Table 2-2's C ([`machines`]), Table 2-2's A, B
-//!   ([`shape_factor_table`]) and Table 2-3's load tests ([`load_tests`]).
+//!   ([`shape_factor_table`]) and Table 2-3's load tests ([`load_tests`]);
+//!   `toroid_dimensions.csv` (Table 2-4's e) with `spin_factors.csv` (Table
+//!   2-5's C''): the spin-test conditions ([`spin_tests`]).
 //! * `thermal_properties.csv`: inlet viscosity, pressure–viscosity
 //!   coefficient, conductivity and temperature coefficients of μ and m for
 //!   the thermal contact model, with sources — [`ThermalProperties`].
@@ -83,7 +85,8 @@ pub use fluid::{
     Envelope, Estimate, Fluid, FluidCorrelation, Policy, Quantity, Query, Source, data_set,
 };
 pub use machines::{
-    LoadTest, Machine, Printed, ShapeFactorRow, load_tests, machine, machines, shape_factor_table,
+    LoadTest, Machine, Printed, ShapeFactorRow, SpinTest, load_tests, machine, machines,
+    shape_factor_table, spin_tests,
 };
 pub use thermal::ThermalProperties;
 pub use traction_regression::{RegressionError, TemperatureForm};

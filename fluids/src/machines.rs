@@ -1,13 +1,15 @@
 //! The report's twin-disc machines and their Hertz tables (section 2-1, 2-2):
 //! Table 2-1 with Table 2-2's C ([`machines`]), Table 2-2's shape factors
-//! ([`shape_factor_table`]) and Table 2-3's load tests ([`load_tests`]).
+//! ([`shape_factor_table`]), Table 2-3's load tests ([`load_tests`]) and the
+//! spin tests of Tables 2-4 and 2-5 ([`spin_tests`]).
 
-use crate::FluidError;
 use crate::data::{need, num, rows};
+use crate::{FluidError, SpinFactor, spin_factor};
 
 const MACHINES: &str = include_str!("../data/machines.csv");
 const SHAPE_FACTORS: &str = include_str!("../data/shape_factors.csv");
 const LOAD_TESTS: &str = include_str!("../data/load_tests.csv");
+const TOROIDS: &str = include_str!("../data/toroid_dimensions.csv");
 
 /// A printed number with the unit of its last printed digit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -161,6 +163,58 @@ pub fn load_tests() -> Result<Vec<LoadTest>, FluidError> {
         .collect()
 }
 
+/// One spin-test condition of Tables 2-4 and 2-5: a disc pair of Table 2-1
+/// with its upper disc tilted by `spin_deg`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpinTest {
+    /// The disc pair (Table 2-1 with Table 2-2's C); Table 2-4's R_y is its
+    /// [`Machine::ry1_mm`].
+    pub machine: Machine,
+    /// Tilt angle, degrees.
+    pub spin_deg: f64,
+    /// Centre offset e of the tilted toroid (Table 2-4, signed as in eq. 6), mm.
+    pub e_mm: f64,
+    /// Table 2-5's printed spin factor C'' (and the one the Appendix III-E
+    /// regression used) for the machine's nominal k and this angle.
+    pub spin_factor: SpinFactor,
+}
+
+/// The eight spin-test conditions of Tables 2-4 and 2-5 in Table 2-5's order
+/// (low-speed k = 0.5, 1, 2, 5 at 6°; high-speed k = 1 and 5 at 15° and 30°):
+/// `toroid_dimensions.csv` joined with [`machines`] and [`crate::spin_factors`].
+pub fn spin_tests() -> Result<Vec<SpinTest>, FluidError> {
+    let file = "toroid_dimensions.csv";
+    let machines = machines()?;
+    rows(TOROIDS)
+        .map(|(line, f)| {
+            need(file, line, &f, 3)?;
+            let missing = |what: String| FluidError::Data {
+                file,
+                line,
+                message: what,
+            };
+            let machine = machines
+                .iter()
+                .find(|m| m.name == f[0])
+                .cloned()
+                .ok_or_else(|| missing(format!("no machine `{}` in machines.csv", f[0])))?;
+            let spin_deg = num(file, line, &f[1])?;
+            let spin_factor = spin_factor(machine.k, spin_deg)?.ok_or_else(|| {
+                missing(format!(
+                    "no spin factor for k = {} at {spin_deg} degrees in spin_factors.csv",
+                    machine.k
+                ))
+            })?;
+            Ok(SpinTest {
+                machine,
+                spin_deg,
+                e_mm: num(file, line, &f[2])?,
+                spin_factor,
+            })
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -189,5 +243,23 @@ mod tests {
             assert_eq!(mach.k, test.k, "{}", test.test);
         }
         assert!(machine("XS k=3").is_err());
+    }
+
+    #[test]
+    fn spin_tests_join_tables_2_1_2_4_2_5() {
+        let t = spin_tests().unwrap();
+        assert_eq!(t.len(), 8);
+        for s in &t {
+            assert_eq!(s.spin_factor.k, s.machine.k);
+            assert_eq!(s.spin_factor.spin_deg, s.spin_deg);
+            assert_eq!(
+                s.spin_factor.high_speed_machine,
+                s.machine.name.starts_with("HS")
+            );
+        }
+        // Table 2-4, high-speed k = 5: e depends on the angle.
+        assert_eq!((t[6].spin_deg, t[6].e_mm), (15.0, -230.0));
+        assert_eq!((t[7].spin_deg, t[7].e_mm), (30.0, -205.0));
+        assert_eq!(t[4].machine.ry1_mm, 22.6);
     }
 }

@@ -81,7 +81,7 @@ impl std::str::FromStr for Platform {
 #[non_exhaustive]
 pub enum PackageError {
     /// Reading the library or writing the archive failed.
-    #[error("{context}: {source}")]
+    #[error("{context}")]
     Io {
         /// What was being read or written.
         context: String,
@@ -89,7 +89,7 @@ pub enum PackageError {
         source: std::io::Error,
     },
     /// The zip writer failed.
-    #[error("writing {path}: {source}")]
+    #[error("writing {path}")]
     Zip {
         /// The archive.
         path: String,
@@ -97,7 +97,7 @@ pub enum PackageError {
         source: zip::result::ZipError,
     },
     /// The XML writer failed.
-    #[error("generating modelDescription.xml: {0}")]
+    #[error("generating modelDescription.xml")]
     Xml(#[from] quick_xml::Error),
 }
 

@@ -47,9 +47,25 @@
 //!   while the J groups keep the zero-spin `μ`.
 
 use traction_contact::{
-    Body, Compliance, ContactError, Direction, DiscMaterial, EnvelopeRule, Model, OperatingState,
-    Options, TractionContact,
+    Body, Compliance, ContactError, DEBORAH_RANGE, Direction, DiscMaterial, EnvelopeRule,
+    KALKER_POISSON_RANGE, Model, OperatingState, Options, OutOfRange, REFERENCE_STRESS_RANGE,
+    ROLLING_SPEED_FLOOR_RANGE, Range, SLOPE_RANGE, TractionContact, thermal,
 };
+
+/// Valid `mu_user` and `mu_spin_user`: (0, 1). Narrower on purpose than
+/// traction-contact's [`traction_contact::TRACTION_COEFFICIENT_RANGE`]
+/// (0, 10]: a lubricated traction contact runs at 0.02..0.15, so a value of 1
+/// or more is a unit slip (a percentage) rather than a fluid, and the FMU
+/// refuses it by name.
+pub const MU_USER_RANGE: Range = Range::open(0.0, 1.0);
+
+/// Valid `rheology_tolerance`: [1e-6, 1e-2]. Narrower on purpose than
+/// traction-rheology's [`traction_contact::TOLERANCE_RANGE`] [1e-9, 0.1]: the
+/// range the FMU is tested over, with the coarse end at the top of the
+/// rheology map's own range (1e-2) and the fine end where a direct evaluation
+/// with spin still fits a co-simulation step (the strip integration's work
+/// grows as the tolerance falls).
+pub const TOLERANCE_RANGE: Range = Range::closed(1e-6, 1e-2);
 
 /// The fluid whose slope `m` and peak `μ` the contact uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -186,9 +202,10 @@ pub struct Parameters {
     pub mu_spin_user: f64,
     /// Disc-compliance correction of the slope (Appendix IV A, B).
     pub compliance: bool,
-    /// Rolling-speed regularisation U_reg, m/s (in [1e-9, 1]).
+    /// Rolling-speed regularisation U_reg, m/s (in traction-contact's
+    /// [`ROLLING_SPEED_FLOOR_RANGE`]).
     pub u_reg: f64,
-    /// Absolute accuracy of J4, J5, J6 of the rheology, in [1e-6, 1e-2].
+    /// Absolute accuracy of J4, J5, J6 of the rheology, in [`TOLERANCE_RANGE`].
     pub tolerance: f64,
     /// Interpolation map of the J+T model (traction-contact `Options::map`).
     pub map: bool,
@@ -261,46 +278,20 @@ pub struct Outputs {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum PhysicsError {
-    /// A parameter or input is outside its valid range.
-    #[error("{name} = {value} is invalid: {valid}")]
-    Invalid {
-        /// The quantity.
-        name: &'static str,
-        /// The offending value.
-        value: f64,
-        /// The valid range.
-        valid: &'static str,
-    },
-    /// The option is not available through the FMU.
-    #[error("{0} is not available in this FMU")]
-    NotYetAvailable(&'static str),
-    /// traction-contact refused the contact or the state.
-    #[error("{0}")]
+    /// A parameter or input is NaN or outside its valid range (the message
+    /// names the variable, its value and the range).
+    #[error(transparent)]
+    OutOfRange(#[from] OutOfRange),
+    /// traction-contact refused the contact or the state (its message and
+    /// sources, unchanged).
+    #[error(transparent)]
     Contact(#[from] ContactError),
 }
 
-fn check(
-    name: &'static str,
-    value: f64,
-    ok: bool,
-    valid: &'static str,
-) -> Result<(), PhysicsError> {
-    if ok && value.is_finite() {
-        Ok(())
-    } else {
-        Err(PhysicsError::Invalid { name, value, valid })
-    }
-}
-
-/// A radius as traction-hertz takes it: 0 and ±∞ mean flat (∞).
+/// A radius as traction-hertz takes it: 0 and ±∞ mean flat (∞); NaN is
+/// refused (`name` says what the values mean).
 fn radius(name: &'static str, r: f64) -> Result<f64, PhysicsError> {
-    if r.is_nan() {
-        return Err(PhysicsError::Invalid {
-            name,
-            value: r,
-            valid: "a radius in m (0 or ±inf for flat, negative for concave)",
-        });
-    }
+    Range::FINITE.with_infinity().check(name, r)?;
     Ok(if r == 0.0 || r.is_infinite() {
         f64::INFINITY
     } else {
@@ -339,19 +330,13 @@ fn thermal(p: &Parameters) -> Result<Option<traction_contact::Thermal>, PhysicsE
     Ok(Some(match p.fluid {
         Fluid::User => {
             let (h, k) = (p.film_thickness, p.fluid_conductivity);
-            check("film_thickness", h, h > 0.0 && h <= 1e-3, "in (0, 1e-3] m")?;
-            check(
-                "fluid_conductivity",
-                k,
-                k > 0.0 && k <= 1e4,
-                "in (0, 1e4] W/(m K)",
-            )?;
-            let max = traction_contact::thermal::MAX_TEMPERATURE_COEFFICIENT;
+            thermal::FILM_THICKNESS_RANGE.check("film_thickness", h)?;
+            thermal::CONDUCTIVITY_RANGE.check("fluid_conductivity", k)?;
             for (name, b) in [
                 ("mu_temperature_coefficient", p.mu_temperature_coefficient),
                 ("m_temperature_coefficient", p.m_temperature_coefficient),
             ] {
-                check(name, b, b.abs() <= max, "in [-1, 1] 1/K")?;
+                thermal::TEMPERATURE_COEFFICIENT_RANGE.check(name, b)?;
             }
             traction_contact::Thermal {
                 film: traction_contact::Film::Thickness(h),
@@ -363,19 +348,6 @@ fn thermal(p: &Parameters) -> Result<Option<traction_contact::Thermal>, PhysicsE
         }
         Fluid::Santotrac50 | Fluid::Tdf88 => traction_contact::Thermal::default(),
     }))
-}
-
-/// A parameter that must be > 0 and may be `+∞` (NaN refused).
-fn positive_or_inf(
-    name: &'static str,
-    value: f64,
-    valid: &'static str,
-) -> Result<(), PhysicsError> {
-    if value > 0.0 {
-        Ok(())
-    } else {
-        Err(PhysicsError::Invalid { name, value, valid })
-    }
 }
 
 /// The contact, built once from its parameters.
@@ -399,16 +371,17 @@ impl Contact {
     /// Validates the parameters and builds the traction-contact model.
     ///
     /// # Errors
-    /// A [`PhysicsError`] naming the first invalid parameter or unavailable option.
+    /// A [`PhysicsError`] naming the first invalid parameter.
     pub fn new(p: &Parameters) -> Result<Self, PhysicsError> {
-        let b1 = Body::new(radius("rx1", p.rx1)?, radius("ry1", p.ry1)?, p.e1, p.nu1);
-        let b2 = Body::new(radius("rx2", p.rx2)?, radius("ry2", p.ry2)?, p.e2, p.nu2);
-        check(
-            "rolling_speed_regularisation",
-            p.u_reg,
-            (1e-9..=1.0).contains(&p.u_reg),
-            "in [1e-9, 1] m/s",
-        )?;
+        const R: [&str; 4] = [
+            "rx1 (radius in m; 0 or inf: flat, negative: concave)",
+            "ry1 (radius in m; 0 or inf: flat, negative: concave)",
+            "rx2 (radius in m; 0 or inf: flat, negative: concave)",
+            "ry2 (radius in m; 0 or inf: flat, negative: concave)",
+        ];
+        let b1 = Body::new(radius(R[0], p.rx1)?, radius(R[1], p.ry1)?, p.e1, p.nu1);
+        let b2 = Body::new(radius(R[2], p.rx2)?, radius(R[3], p.ry2)?, p.e2, p.nu2);
+        ROLLING_SPEED_FLOOR_RANGE.check("rolling_speed_regularisation", p.u_reg)?;
         let envelope = match p.envelope {
             Envelope::Strict => EnvelopeRule::Strict,
             Envelope::Extrapolate => EnvelopeRule::Extrapolate,
@@ -416,25 +389,13 @@ impl Contact {
         };
         let fluid = match p.fluid {
             Fluid::User => {
-                check(
-                    "m_user",
-                    p.m_user,
-                    p.m_user > 0.0,
-                    "initial traction slope, > 0",
-                )?;
-                check(
-                    "mu_user",
-                    p.mu_user,
-                    p.mu_user > 0.0 && p.mu_user < 1.0,
-                    "peak traction coefficient in (0, 1)",
-                )?;
+                SLOPE_RANGE.check("m_user (initial traction slope)", p.m_user)?;
+                MU_USER_RANGE.check("mu_user (peak traction coefficient)", p.mu_user)?;
                 let f = traction_contact::Fluid::constant(p.m_user, p.mu_user)?;
                 if p.spin_peak {
-                    check(
-                        "mu_spin_user",
+                    MU_USER_RANGE.check(
+                        "mu_spin_user (spin-peak traction coefficient)",
                         p.mu_spin_user,
-                        p.mu_spin_user > 0.0 && p.mu_spin_user < 1.0,
-                        "spin-peak traction coefficient in (0, 1)",
                     )?;
                     f.with_spin_peak(p.mu_spin_user)?
                 } else {
@@ -450,15 +411,13 @@ impl Contact {
             Rheology::ElasticPlastic => Model::ElasticPlastic,
             Rheology::RigidPlastic => Model::RigidPlastic,
             Rheology::Viscoelastic => {
-                positive_or_inf(
-                    "deborah",
+                DEBORAH_RANGE.check(
+                    "deborah (Deborah number D = eta U/(G a); inf: elastic/plastic)",
                     p.deborah,
-                    "Deborah number D = eta U/(G a), > 0 (inf = elastic/plastic)",
                 )?;
-                positive_or_inf(
-                    "z0",
+                REFERENCE_STRESS_RANGE.check(
+                    "z0 (sinh reference stress Z0 = tau0/tau_bar; inf: linear Maxwell fluid)",
                     p.z0,
-                    "sinh reference stress Z0 = tau0/tau_bar, > 0 (inf = linear Maxwell fluid)",
                 )?;
                 if p.deborah == f64::INFINITY {
                     // D = ∞ is the elastic/plastic model exactly (the
@@ -475,11 +434,9 @@ impl Contact {
         };
         let compliance = if p.compliance {
             let material = kalker_combined(p.e1, p.nu1, p.e2, p.nu2);
-            check(
+            KALKER_POISSON_RANGE.check(
                 "nu1, nu2 (compliance_correction: Kalker's combined Poisson's ratio of the two bodies)",
                 material.poisson_ratio,
-                (0.0..=0.5).contains(&material.poisson_ratio),
-                "in [0, 0.5] (Kalker's table)",
             )?;
             Compliance::Discs {
                 material,
@@ -488,11 +445,9 @@ impl Contact {
         } else {
             Compliance::Off
         };
-        check(
-            "rheology_tolerance",
+        TOLERANCE_RANGE.check(
+            "rheology_tolerance (absolute accuracy of J4, J5, J6)",
             p.tolerance,
-            (1e-6..=1e-2).contains(&p.tolerance),
-            "an absolute accuracy of J4, J5, J6 in [1e-6, 1e-2]",
         )?;
         let accuracy = traction_contact::Accuracy::new(p.tolerance)
             .map_err(|e| PhysicsError::Contact(e.into()))?;
@@ -523,12 +478,7 @@ impl Contact {
     /// [`PhysicsError`] when an input is NaN, infinite or out of the model's
     /// range, or a correlation fails (strict envelope).
     pub fn evaluate(&self, i: &Inputs) -> Result<Outputs, PhysicsError> {
-        check(
-            "normal_load",
-            i.load,
-            true,
-            "a finite force in N (<= 0 opens the contact)",
-        )?;
+        Range::FINITE.check("normal_load (N; <= 0 opens the contact)", i.load)?;
         let state = OperatingState::new(
             i.load.max(0.0),
             i.u,
@@ -807,6 +757,8 @@ mod tests {
 
     #[test]
     fn open_contact_gives_zeros_and_errors_name_the_quantity() {
+        // As the FMU logs them: the error with its sources.
+        let msg = |e: PhysicsError| traction_contact::error_chain(&e);
         let c = Contact::new(&steel_twin_disc()).unwrap();
         let o = c.evaluate(&op(-5.0, 20.0, 1.0, 1.0)).unwrap();
         assert_eq!((o.fx, o.fy, o.a, o.p0), (0.0, 0.0, 0.0, 0.0));
@@ -827,7 +779,7 @@ mod tests {
             rx2: -0.033,
             ..steel_twin_disc()
         };
-        let e = Contact::new(&conform).unwrap_err().to_string();
+        let e = msg(Contact::new(&conform).unwrap_err());
         assert!(e.contains("curvature"), "{e}");
         for (deborah, z0, name) in [
             (-1.0, 1.0, "deborah"),
@@ -860,10 +812,7 @@ mod tests {
         };
         let e = Contact::new(&auxetic).unwrap_err().to_string();
         assert!(e.starts_with("nu1, nu2"), "{e}");
-        let e = c
-            .evaluate(&op(600.0, 2e6, 1.0, 0.0))
-            .unwrap_err()
-            .to_string();
+        let e = msg(c.evaluate(&op(600.0, 2e6, 1.0, 0.0)).unwrap_err());
         assert!(e.contains("rolling speed"), "{e}");
     }
 

@@ -11,6 +11,7 @@ use std::ffi::{CStr, CString, c_char, c_int, c_void};
 use traction_fmu::ffi::*;
 use traction_fmu::model_description::guid;
 use traction_fmu::variables::{VARIABLES, vr};
+use traction_testkit::XorShift64Star;
 
 #[derive(Default)]
 struct Sink {
@@ -86,20 +87,15 @@ fn callbacks(sink: &mut Sink) -> Fmi2CallbackFunctions {
     }
 }
 
-struct Rng(u64);
+/// The fuzz's random choices: xorshift64* with values that include the
+/// special floats.
+struct Rng(XorShift64Star);
 impl Rng {
-    fn next(&mut self) -> u64 {
-        // xorshift64*
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
     fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
+        self.0.below(n)
     }
     fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+        self.0.unit()
     }
     fn value(&mut self, scale: f64) -> f64 {
         match self.below(20) {
@@ -146,7 +142,7 @@ fn hundred_thousand_random_steps_through_the_c_abi() {
 
 #[test]
 fn random_steps_with_the_rheology_map() {
-    // rheology_map on (its default): inputs and parameters drawn from small
+    // rheology_map on (off by default): inputs and parameters drawn from small
     // pools (specials included), the same state machine and checks. The
     // states still hardly recur (8 values per variable), so nearly every
     // step with spin builds map cells (milliseconds each): 3000 steps.
@@ -199,7 +195,7 @@ fn fuzz(seed: u64, n_steps: usize, map: bool) -> (usize, usize, usize, usize) {
         (vr::Z0, 1.0),
         (vr::MU_SPIN_USER, 0.2),
     ];
-    let mut rng = Rng(seed);
+    let mut rng = Rng(XorShift64Star::new(seed));
     let set_map = |c| {
         let x = Fmi2Boolean::from(map);
         // SAFETY: valid instance and pointers.

@@ -62,7 +62,7 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 use std::hash::{BuildHasherDefault, Hasher};
 
-use crate::{Accuracy, Inputs, Model, Outputs, RheologyError, evaluate};
+use crate::{Accuracy, Inputs, Model, Outputs, Range, RheologyError, evaluate};
 
 /// Step in ρ = asinh(|x|).
 const H_RHO: f64 = 0.15;
@@ -83,8 +83,8 @@ const R_DIRECT: f64 = 1e10;
 pub const MAX_CELLS: usize = 1 << 12;
 /// Largest number of nodes kept before the cache is cleared.
 const MAX_NODES: usize = 1 << 16;
-/// Smallest and largest map tolerance.
-const TOL_RANGE: (f64, f64) = (1e-4, 1e-2);
+/// Valid accuracy targets of a map (tol of its [`Accuracy`]): [1e-4, 1e-2].
+pub const TOLERANCE_RANGE: Range = Range::closed(1e-4, 1e-2);
 
 /// Counters of a [`Map`] (for benches and diagnostics).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -178,14 +178,12 @@ impl std::fmt::Debug for IndexHasher {
 impl Map {
     /// An empty map for aspect ratio `k`, spin-pole offset `dx`, stiffness
     /// ratio `gy` (validated as [`Inputs`]) and accuracy `acc` (target
-    /// absolute error of J4, J5, J6; tol in [1e-4, 1e-2], else
-    /// [`RheologyError::MapTolerance`]).
+    /// absolute error of J4, J5, J6; tol in [`TOLERANCE_RANGE`], else
+    /// [`RheologyError::OutOfRange`]).
     pub fn new(k: f64, dx: f64, gy: f64, acc: Accuracy) -> Result<Map, RheologyError> {
         Inputs::with_offset(k, 0.0, 0.0, 0.0, dx)?.with_stiffness_ratio(gy)?;
         let tol = acc.tol();
-        if !(TOL_RANGE.0..=TOL_RANGE.1).contains(&tol) {
-            return Err(RheologyError::MapTolerance(tol));
-        }
+        TOLERANCE_RANGE.check("map accuracy tol", tol)?;
         Ok(Map {
             k,
             dx,

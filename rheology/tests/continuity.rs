@@ -1,7 +1,7 @@
 //! Continuity of the elastic/plastic outputs in the inputs: across J3 = 0
 //! (the zero-spin closed form against the integrator) and along lines in
 //! J space (no jumps from discretisation choices).
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, evaluate};

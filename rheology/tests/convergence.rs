@@ -1,10 +1,11 @@
 //! Convergence study of the elastic/plastic strip integrator: observed order
 //! in the s-step (plastic segments, RK4) and in the Y panel width, and the
 //! accuracy parameter's promise (error ≤ tol against a converged solution).
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, evaluate};
+use traction_testkit::Lcg;
 
 fn err(a: &Outputs, b: &Outputs) -> f64 {
     (a.j4 - b.j4)
@@ -129,13 +130,8 @@ fn accuracy_parameter_is_met_on_random_cases() {
     // a coarser one (64 panels, h = 0.008): their difference bounds its own
     // error and must be < 1e-5, so that error ≤ tol is meaningful at 1e-4.
     let mut cases = vec![(0.151, 0.358, 0.648, -43.226)];
-    let mut s: u64 = 0x5eed_1234;
-    let mut rnd = || {
-        s = s
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((s >> 11) as f64) / ((1u64 << 53) as f64)
-    };
+    let mut lcg = Lcg::new(0x5eed_1234);
+    let mut rnd = || lcg.unit();
     for _ in 0..60 {
         let k = 10f64.powf(rnd() * 2.6 - 1.3);
         let mut signed = |lo: f64, span: f64| {

@@ -1,6 +1,6 @@
 //! The stress-field output: exact against the slip-only closed form, bounded
 //! by the limit, and consistent with the integrated J4, J5.
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
 use traction_rheology::{
     Accuracy, Inputs, Model, PointState, RheologyError, evaluate, stress_field,

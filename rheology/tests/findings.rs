@@ -1,6 +1,6 @@
 //! TP 1530 / 78-Lub-10 findings that are quantitative, checked on the
 //! converged elastic/plastic model.
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
 use traction_rheology::{Accuracy, Inputs, Model, Outputs, evaluate};
 

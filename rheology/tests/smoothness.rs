@@ -1,7 +1,7 @@
 //! Smoothness of the elastic/plastic outputs along lines in J space: the
 //! discretisation's choices (adaptive panels in Y, step counts) must not
 //! produce jumps, so that finite-difference Jacobians work.
-#![allow(clippy::unwrap_used)] // test helpers: a failed unwrap is a failed test
+#![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
 use traction_rheology::{Accuracy, Inputs, Model, evaluate};
 

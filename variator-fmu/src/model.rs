@@ -8,7 +8,7 @@
 //! variator): they are recomputed when an output is read after an input or
 //! parameter changed, and at every `fmi2DoStep`.
 
-use traction_contact::{DiscMaterial, EnvelopeRule, Fluid, Options, Regime, Thermal};
+use traction_contact::{DiscMaterial, EnvelopeRule, Fluid, Options, Regime, Thermal, error_chain};
 use traction_variator::{Cavity, OperatingPoint, ToroidalVariator};
 
 use crate::variables::{
@@ -382,8 +382,8 @@ impl VariatorFmu {
     fn build(&self) -> Result<ToroidalVariator, FmuError> {
         let p = &self.s.params;
         let at = |r: u32| p[r as usize - 1];
-        let param = |what: &str, e: &dyn std::fmt::Display| {
-            FmuError::error(format!("invalid parameter ({what}): {e}"))
+        let param = |what: &str, e: &dyn std::error::Error| {
+            FmuError::error(format!("invalid parameter ({what}): {}", error_chain(e)))
         };
         let rollers = u32::try_from(self.s.rollers).unwrap_or(0);
         let cavity = Cavity::half_toroidal(
@@ -473,11 +473,10 @@ impl VariatorFmu {
             input(vr::END_LOAD),
             input(vr::INLET_TEMPERATURE),
         )
-        .map_err(|e| FmuError::error(format!("invalid input: {e}")))?;
-        let r = self
-            .variator()?
-            .evaluate(&point)
-            .map_err(|e| FmuError::error(format!("variator evaluation failed: {e}")))?;
+        .map_err(|e| FmuError::error(format!("invalid input: {}", error_chain(&e))))?;
+        let r = self.variator()?.evaluate(&point).map_err(|e| {
+            FmuError::error(format!("variator evaluation failed: {}", error_chain(&e)))
+        })?;
         let mut out = [0.0; N_REAL_OUTPUTS];
         out[..variables::N_VARIATOR_OUTPUTS].copy_from_slice(&[
             r.torque_in,

@@ -14,7 +14,7 @@ use crate::variables::{Causality, Kind, VARIABLES};
 #[non_exhaustive]
 pub enum PackageError {
     /// Reading the library or writing the archive failed.
-    #[error("{context}: {source}")]
+    #[error("{context}")]
     Io {
         /// What was being read or written.
         context: String,
@@ -22,7 +22,7 @@ pub enum PackageError {
         source: std::io::Error,
     },
     /// The zip writer failed.
-    #[error("writing {path}: {source}")]
+    #[error("writing {path}")]
     Zip {
         /// The archive.
         path: String,
@@ -30,7 +30,7 @@ pub enum PackageError {
         source: zip::result::ZipError,
     },
     /// The XML writer failed.
-    #[error("generating modelDescription.xml: {0}")]
+    #[error("generating modelDescription.xml")]
     Xml(#[from] quick_xml::Error),
 }
 

@@ -5,7 +5,8 @@ use traction_kinematics::KinematicsError;
 
 /// Why a variator could not be built or evaluated. Every variant names the
 /// offending quantity and its valid range; the lower crates' errors are
-/// wrapped unchanged.
+/// wrapped unchanged as the source of a variant that names the context (show
+/// a user the whole chain: `traction_contact::error_chain`).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum VariatorError {
@@ -20,10 +21,10 @@ pub enum VariatorError {
         valid: &'static str,
     },
     /// The cavity geometry at the tilt could not be computed.
-    #[error("variator kinematics: {0}")]
+    #[error("variator kinematics")]
     Kinematics(#[from] KinematicsError),
     /// A disc–roller contact could not be built or evaluated.
-    #[error("disc–roller contact: {0}")]
+    #[error("disc–roller contact")]
     Contact(#[from] ContactError),
     /// The roller torque balance could not be bracketed (the contacts'
     /// traction torques do not change sign over the searched roller speeds).

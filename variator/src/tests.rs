@@ -342,7 +342,7 @@ fn bad_input_names_the_quantity() {
     let err = |r: Result<_>| -> String {
         match r {
             Ok(_) => panic!("accepted"),
-            Err(e) => e.to_string(),
+            Err(e) => traction_contact::error_chain(&e),
         }
     };
     assert!(

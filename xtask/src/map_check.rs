@@ -6,6 +6,7 @@
 use crate::arg;
 use std::f64::consts::PI;
 use traction_rheology::{Accuracy, Inputs, Model, evaluate, map::Map};
+use traction_testkit::XorShift64;
 
 /// Runs the check with the command line's arguments after `map-check`.
 pub fn run(a: &[String]) -> Result<(), String> {
@@ -18,13 +19,8 @@ pub fn run(a: &[String]) -> Result<(), String> {
     let (dx, gy): (f64, f64) = (arg(a, 4, "DX", Some(0.0))?, arg(a, 5, "GY", Some(1.0))?);
     let mut map = Map::new(k, dx, gy, Accuracy::new(tol).map_err(|e| e.to_string())?)
         .map_err(|e| e.to_string())?;
-    let mut seed = 0x1234_5678_9abc_def1u64 ^ (k * 1e6) as u64;
-    let mut rnd = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut xs = XorShift64::new(0x1234_5678_9abc_def1u64 ^ (k * 1e6) as u64);
+    let mut rnd = || xs.unit();
     let (s12, s3) = (1.0 / k.sqrt(), (1.0 + 1.0 / (k * k)).sqrt());
     let acc = Accuracy::new(tol / 100.0).map_err(|e| e.to_string())?;
     let (mut worst, mut hist) = (0.0f64, [0usize; 5]);

@@ -5,6 +5,12 @@ use super::snapshot::{Snapshot, check_enum, check_real};
 use super::{CoSimulation, FmuError, FmuResult, Logger, Mode, Status};
 use crate::physics::{self, Contact, PhysicsError, UnknownCode};
 use crate::variables::{self, Causality, Type, vr};
+use traction_contact::{ANGLE_RANGE, OutOfRange, Range, error_chain};
+
+/// An FMU parameter or input outside its range, as the FMU reports it.
+fn out_of_range(e: OutOfRange) -> FmuError {
+    FmuError::error(e.to_string())
+}
 
 /// The traction contact FMU instance.
 #[derive(Debug, Clone)]
@@ -136,24 +142,20 @@ impl TractionFmu {
             (s.param::<{ vr::ROLLING_RADIUS1 }>(), "rolling_radius1"),
             (s.param::<{ vr::ROLLING_RADIUS2 }>(), "rolling_radius2"),
         ] {
-            if !(r.is_finite() && r > 0.0) {
-                return Err(FmuError::error(format!(
-                    "{name} = {r} is invalid: a distance in m, finite and > 0"
-                )));
-            }
+            Range::POSITIVE
+                .with_unit("m")
+                .check(name, r)
+                .map_err(out_of_range)?;
         }
         let alpha = s.param::<{ vr::TILT_ANGLE }>();
-        if !(alpha.is_finite() && alpha.abs() < std::f64::consts::FRAC_PI_2) {
-            return Err(FmuError::error(format!(
-                "spin_tilt_angle = {alpha} is invalid: an angle in rad with |alpha| < pi/2"
-            )));
-        }
+        ANGLE_RANGE
+            .check("spin_tilt_angle", alpha)
+            .map_err(out_of_range)?;
         let offset = s.param::<{ vr::TILT_OFFSET }>();
-        if !offset.is_finite() {
-            return Err(FmuError::error(format!(
-                "spin_center_offset = {offset} is invalid: a finite distance in m"
-            )));
-        }
+        Range::FINITE
+            .with_unit("m")
+            .check("spin_center_offset", offset)
+            .map_err(out_of_range)?;
         Ok(physics::Parameters {
             rx1: s.param::<{ vr::RX1 }>(),
             ry1: s.param::<{ vr::RY1 }>(),
@@ -197,8 +199,9 @@ impl TractionFmu {
     fn contact(&mut self) -> Result<&Contact, FmuError> {
         if self.contact.is_none() {
             let p = self.physics_parameters()?;
-            let c = Contact::new(&p)
-                .map_err(|e: PhysicsError| FmuError::error(format!("invalid parameters: {e}")))?;
+            let c = Contact::new(&p).map_err(|e: PhysicsError| {
+                FmuError::error(format!("invalid parameters: {}", error_chain(&e)))
+            })?;
             if let Some(m) = self.spare_map.take() {
                 c.adopt_map(m);
             }
@@ -249,11 +252,9 @@ impl TractionFmu {
         let dv = match s.choice::<{ vr::SIDE_SLIP_SOURCE }, _>()? {
             SideSlipSource::SkewAngle => {
                 let beta = s.input::<{ vr::SKEW_ANGLE }>();
-                if beta.abs() >= std::f64::consts::FRAC_PI_2 {
-                    return Err(FmuError::error(format!(
-                        "skew_angle = {beta} is invalid: an angle in rad with |beta| < pi/2"
-                    )));
-                }
+                ANGLE_RANGE
+                    .check("skew_angle", beta)
+                    .map_err(out_of_range)?;
                 u * beta.tan()
             }
             SideSlipSource::Velocity => s.input::<{ vr::SIDE_SLIP_VELOCITY }>(),
@@ -270,10 +271,9 @@ impl TractionFmu {
             omega,
             inlet_temperature_celsius: s.input::<{ vr::INLET_TEMPERATURE }>(),
         };
-        let o = self
-            .contact()?
-            .evaluate(&op)
-            .map_err(|e| FmuError::error(format!("contact evaluation failed: {e}")))?;
+        let o = self.contact()?.evaluate(&op).map_err(|e| {
+            FmuError::error(format!("contact evaluation failed: {}", error_chain(&e)))
+        })?;
         let coef = |f: f64| if op.load > 0.0 { f / op.load } else { 0.0 };
         let s = &mut self.s;
         let previous = s.outputs;

@@ -99,18 +99,13 @@ const fn output(
 /// The table, in the order of ModelVariables (indices are 1-based there).
 ///
 /// Ranges: where the FMU accepts what the library accepts, the bound is the
-/// library's constant (`m_user` up to `traction_contact::MAX_SLOPE`). Two
-/// are narrower on purpose: `mu_user`, `mu_spin_user` < 1 where
-/// traction-contact accepts up to `MAX_TRACTION_COEFFICIENT` (10): a
-/// lubricated traction contact runs at 0.02..0.15, so a value of 1 or more
-/// is a unit slip (a percentage) rather than a fluid, and the FMU refuses it
-/// by name; `rheology_tolerance` in [1e-6, 1e-2] where traction-rheology's
-/// `Accuracy` takes [1e-9, 0.1] (it has no public constant for them, so the
-/// literals stay here and in [`crate::physics`]): the range the FMU is tested
-/// over, with the coarse end at the top of the rheology map's own range
-/// (1e-2) and the fine end where a direct evaluation with spin still fits a
-/// co-simulation step (the strip integration's work grows as the tolerance
-/// falls). The physics checks the same ranges.
+/// library's constant (`m_user` up to `traction_contact::MAX_SLOPE`,
+/// `rolling_speed_regularisation` in
+/// `traction_contact::ROLLING_SPEED_FLOOR_RANGE`). Two are narrower on
+/// purpose, for the reasons stated at [`crate::physics::MU_USER_RANGE`] and
+/// [`crate::physics::TOLERANCE_RANGE`]; the physics checks the same ranges.
+/// `mu_user`, `mu_spin_user` are open intervals (0, 1), bounded here by the
+/// nearest round values (1e-6, 0.999).
 pub const VARIABLES: &[Variable] = &[
     par(
         "rx1",
@@ -227,8 +222,8 @@ pub const VARIABLES: &[Variable] = &[
         vr::U_REG,
         "Velocity",
         0.01,
-        1e-9,
-        1e3,
+        traction_contact::ROLLING_SPEED_FLOOR_RANGE.min(),
+        traction_contact::ROLLING_SPEED_FLOOR_RANGE.max(),
         "U_reg: the J groups use max(|U|, U_reg) so that forces stay finite and continuous through zero rolling speed, m/s",
     ),
     par(
@@ -259,8 +254,8 @@ pub const VARIABLES: &[Variable] = &[
         vr::RHEOLOGY_TOLERANCE,
         "Dimensionless",
         1e-4,
-        1e-6,
-        1e-2,
+        crate::physics::TOLERANCE_RANGE.min(),
+        crate::physics::TOLERANCE_RANGE.max(),
         "Absolute accuracy of the J+T solution in J4, J5, J6 (all rheology models; with rheology_map the interpolation is checked to it too); valid range [1e-6, 1e-2]",
     ),
     par_bounded(
