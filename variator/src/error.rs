@@ -10,7 +10,9 @@ use traction_kinematics::KinematicsError;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum VariatorError {
-    /// An input of this crate is NaN, infinite or outside its valid range.
+    /// An input of this crate is invalid in combination with another input
+    /// (the roller crown radius against the cavity radius, the tilt against
+    /// the half-cone angle; the message says what is required).
     #[error("{quantity} = {value} is out of range: must be {valid}")]
     OutOfRange {
         /// Which quantity, with its unit.
@@ -20,6 +22,11 @@ pub enum VariatorError {
         /// The valid range, in words.
         valid: &'static str,
     },
+    /// An input of this crate is NaN, infinite or outside its valid range
+    /// (one of the crate's `*_RANGE` constants or a range of its own; the
+    /// message names the quantity, the value and the range).
+    #[error(transparent)]
+    Range(#[from] traction_range::OutOfRange),
     /// The cavity geometry at the tilt could not be computed.
     #[error("variator kinematics")]
     Kinematics(#[from] KinematicsError),

@@ -98,6 +98,9 @@
 //! `1 ≤ n ≤ 16`, `|γ| < θ0` with both contact radii positive, disc speeds
 //! finite with `|ω| ≤ 1e5 rad/s`, `0 ≤ F_a ≤ 1e9 N`, θ above −273.15 °C;
 //! the contact's own limits apply to each contact (k in [0.01, 100], …).
+//! The limits that do not depend on another input are the `*_RANGE`
+//! constants ([`DISC_SPEED_RANGE`], [`END_LOAD_RANGE`],
+//! [`HALF_CONE_ANGLE_RANGE`], [`TILT_RANGE`], [`ROLLERS_RANGE`]).
 //!
 //! # Example
 //!
@@ -136,6 +139,7 @@ use traction_contact::{
 use traction_kinematics::{
     BodyMotion, ContactKinematics, HalfToroidalVariator, Vector3, contact_kinematics,
 };
+use traction_range::Range;
 
 /// Largest accepted |disc speed|, rad/s.
 pub const MAX_DISC_SPEED: f64 = 1e5;
@@ -143,6 +147,19 @@ pub const MAX_DISC_SPEED: f64 = 1e5;
 pub const MAX_END_LOAD: f64 = 1e9;
 /// Largest accepted number of rollers.
 pub const MAX_ROLLERS: u32 = 16;
+/// Valid disc speeds ω_in, ω_out: |ω| ≤ [`MAX_DISC_SPEED`].
+pub const DISC_SPEED_RANGE: Range =
+    Range::closed(-MAX_DISC_SPEED, MAX_DISC_SPEED).with_unit("rad/s");
+/// Valid end loads F_a: [0, [`MAX_END_LOAD`]].
+pub const END_LOAD_RANGE: Range = Range::closed(0.0, MAX_END_LOAD).with_unit("N");
+/// Valid roller half-cone angles θ0: (0, π/2] (π/2: full toroidal).
+pub const HALF_CONE_ANGLE_RANGE: Range =
+    Range::open(0.0, FRAC_PI_2).closed_above().with_unit("rad");
+/// Valid roller tilts γ of an [`OperatingPoint`]: |γ| < π/2 (the cavity
+/// narrows this to |γ| < θ0 in [`ToroidalVariator::evaluate`]).
+pub const TILT_RANGE: Range = Range::open(-FRAC_PI_2, FRAC_PI_2).with_unit("rad");
+/// Valid numbers of rollers n: [1, [`MAX_ROLLERS`]].
+pub const ROLLERS_RANGE: Range = Range::closed(1.0, MAX_ROLLERS as f64);
 
 /// Result alias of this crate.
 pub type Result<T> = std::result::Result<T, VariatorError>;
@@ -208,36 +225,17 @@ impl Cavity {
 
     /// Checks the ranges in the field docs.
     pub fn validate(&self) -> Result<()> {
-        let r0 = check(
-            "cavity radius r0 (m)",
-            self.cavity_radius,
-            self.cavity_radius > 0.0,
-            "finite and > 0 m",
-        )?;
-        check(
-            "cavity centre radius e0 (m)",
-            self.cavity_centre_radius,
-            self.cavity_centre_radius > 0.0,
-            "finite and > 0 m",
-        )?;
-        check(
-            "half-cone angle θ0 (rad)",
-            self.half_cone_angle,
-            self.half_cone_angle > 0.0 && self.half_cone_angle <= FRAC_PI_2,
-            "in (0, π/2] rad",
-        )?;
+        let length = Range::POSITIVE.with_unit("m");
+        let r0 = length.check("cavity radius r0", self.cavity_radius)?;
+        length.check("cavity centre radius e0", self.cavity_centre_radius)?;
+        HALF_CONE_ANGLE_RANGE.check("half-cone angle θ0", self.half_cone_angle)?;
         check(
             "roller crown radius r22 (m)",
             self.roller_crown_radius,
             self.roller_crown_radius > 0.0 && self.roller_crown_radius < r0,
             "in (0, r0) m (the roller must be more curved than the cavity)",
         )?;
-        check(
-            "number of rollers n",
-            f64::from(self.rollers),
-            (1..=MAX_ROLLERS).contains(&self.rollers),
-            "an integer in [1, 16]",
-        )?;
+        ROLLERS_RANGE.check("number of rollers n", f64::from(self.rollers))?;
         Ok(())
     }
 
@@ -288,27 +286,12 @@ impl OperatingPoint {
 
     /// Checks the ranges (the fields are public, so `evaluate` checks again).
     pub fn validate(&self) -> Result<()> {
-        let speed = |q, v: f64| check(q, v, v.abs() <= MAX_DISC_SPEED, "finite, |ω| ≤ 1e5 rad/s");
-        speed("input-disc speed ω_in (rad/s)", self.input_speed)?;
-        speed("output-disc speed ω_out (rad/s)", self.output_speed)?;
-        check(
-            "roller tilt γ (rad)",
-            self.tilt,
-            self.tilt.abs() < FRAC_PI_2,
-            "finite, |γ| < θ0 ≤ π/2 rad",
-        )?;
-        check(
-            "end load F_a (N)",
-            self.end_load,
-            (0.0..=MAX_END_LOAD).contains(&self.end_load),
-            "in [0, 1e9] N",
-        )?;
-        check(
-            "inlet temperature θ (°C)",
-            self.inlet_temperature_celsius,
-            self.inlet_temperature_celsius > -273.15,
-            "finite and above −273.15 °C",
-        )?;
+        DISC_SPEED_RANGE.check("input-disc speed ω_in", self.input_speed)?;
+        DISC_SPEED_RANGE.check("output-disc speed ω_out", self.output_speed)?;
+        TILT_RANGE.check("roller tilt γ", self.tilt)?;
+        END_LOAD_RANGE.check("end load F_a", self.end_load)?;
+        traction_contact::INLET_TEMPERATURE_RANGE
+            .check("inlet temperature θ", self.inlet_temperature_celsius)?;
         Ok(())
     }
 }
@@ -463,19 +446,13 @@ impl Clone for ToroidalVariator {
     }
 }
 
-fn check_material(which: &'static str, m: &DiscMaterial) -> Result<()> {
-    check(
-        which,
-        m.youngs_modulus,
-        m.youngs_modulus > 0.0,
-        "Young's modulus finite and > 0 Pa",
-    )?;
-    check(
-        which,
-        m.poisson_ratio,
-        m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5,
-        "Poisson's ratio in (−1, 0.5)",
-    )?;
+/// `quantities`: the names of the material's Young's modulus and Poisson's
+/// ratio in the messages.
+fn check_material(quantities: [&'static str; 2], m: &DiscMaterial) -> Result<()> {
+    Range::POSITIVE
+        .with_unit("Pa")
+        .check(quantities[0], m.youngs_modulus)?;
+    Range::open(-1.0, 0.5).check(quantities[1], m.poisson_ratio)?;
     Ok(())
 }
 
@@ -493,8 +470,20 @@ impl ToroidalVariator {
         options: Options,
     ) -> Result<Self> {
         cavity.validate()?;
-        check_material("disc material", &disc)?;
-        check_material("roller material", &roller)?;
+        check_material(
+            [
+                "disc material: Young's modulus",
+                "disc material: Poisson's ratio",
+            ],
+            &disc,
+        )?;
+        check_material(
+            [
+                "roller material: Young's modulus",
+                "roller material: Poisson's ratio",
+            ],
+            &roller,
+        )?;
         let v = ToroidalVariator {
             kinematics: cavity.kinematics()?,
             cavity,

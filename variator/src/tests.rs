@@ -388,6 +388,23 @@ fn bad_input_names_the_quantity() {
         err(ToroidalVariator::new(c, bad, steel, fluid.clone(), Options::default()).map(|_| ()))
             .contains("disc material")
     );
+    // Range-checked inputs state the quantity, the value and the whole range.
+    assert_eq!(
+        err(OperatingPoint::new(1.0, 2e5, 0.0, 1.0, 70.0).map(|_| ())),
+        "output-disc speed ω_out = 200000 is out of range: must be in [-1e5, 1e5] rad/s"
+    );
+    assert_eq!(
+        err(Cavity::half_toroidal(R0, 1.625 * R0, 1.7, R22, 2).map(|_| ())),
+        "half-cone angle θ0 = 1.7 is out of range: must be in (0, 1.5707963267948966] rad"
+    );
+    let soft = DiscMaterial {
+        youngs_modulus: 210e9,
+        poisson_ratio: 0.5,
+    };
+    assert_eq!(
+        err(ToroidalVariator::new(c, steel, soft, fluid.clone(), Options::default()).map(|_| ())),
+        "roller material: Poisson's ratio = 0.5 is out of range: must be in (-1, 0.5)"
+    );
     // A cavity whose inner contact reaches the main axis at large tilt.
     let small = Cavity::half_toroidal(R0, 0.7 * R0, 1.0, R22, 2).unwrap();
     let v = ToroidalVariator::new(small, steel, steel, fluid, Options::default()).unwrap();
