@@ -389,8 +389,10 @@ proptest! {
     ) {
         let i = Inputs::with_offset(k, j1, j2, j3, dx).unwrap();
         let o = evaluate(&i, Model::ElasticPlastic, Accuracy::new(1e-2).unwrap()).unwrap();
-        // |Z| ≤ L everywhere ⇒ |(J4, J5)| ≤ (1/π)∫∫L = 1 (+ quadrature slack).
-        prop_assert!(o.j4.hypot(o.j5) <= 1.0 + 1e-6, "{:?}", o);
+        // |Z| ≤ L everywhere ⇒ the exact |(J4, J5)| ≤ (1/π)∫∫L = 1; the
+        // result is within the requested tol (1e-2) of it (the accuracy
+        // contract), so |(J4, J5)| ≤ 1 + tol.
+        prop_assert!(o.j4.hypot(o.j5) <= 1.0 + 1e-2, "{:?}", o);
         // Dissipation only: J7 ≥ 0 (discretisation error ≤ 1e-2·(|J|) allowed).
         let scale = j1.abs() + j2.abs() + j3.abs();
         prop_assert!(o.j7 >= -1e-2 * scale, "{:?}", o);
@@ -412,7 +414,10 @@ proptest! {
         let i = Inputs::new(k, j1, j2, j3).unwrap().with_stiffness_ratio(10f64.powf(lg)).unwrap();
         let o = evaluate(&i, Model::ElasticPlastic, Accuracy::new(1e-2).unwrap()).unwrap();
         prop_assert!(o.j4.is_finite() && o.j5.is_finite() && o.j6.is_finite() && o.j7.is_finite());
-        prop_assert!(o.j4.hypot(o.j5) <= 1.0 + 1e-6, "{:?}", o);
+        // Bounded by 1 + tol (the accuracy contract; the quadrature may
+        // overshoot the exact bound 1 by less than tol: 4.4e-5 at k = 0.05,
+        // J1 = −23.8, J2 = J3 = 0, gy = 2.0, the case in the regression file).
+        prop_assert!(o.j4.hypot(o.j5) <= 1.0 + 1e-2, "{:?}", o);
         let scale = j1.abs() + j2.abs() + j3.abs();
         prop_assert!(o.j7 >= -1e-2 * scale, "{:?}", o);
     }
