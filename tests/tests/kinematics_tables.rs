@@ -3,7 +3,8 @@
 //!
 //! Inputs (read from `fluids/data` through traction-fluids' `spin_tests` and
 //! `main_text_tables`): Table 2-4 (R_y, e), Table 2-2 (C, printed, as input),
-//! Tables 2-5 and 2-6 (printed); equations 6 and 7. The tolerances are the
+//! Tables 2-5 and 2-6 (printed), the Appendix VI traces (`appendix_vi_spin_traces.csv`:
+//! J2, J3 printed with m, μ, k, Z, ΔV/U); equations 6 and 7. The tolerances are the
 //! reproduction's (`traction_reproduce::tables::spin`).
 //! OCR/print corrections (each checked independently):
 //! * High-speed machine, k = 1: Table 2-4 prints R_y = 20.6 mm, Table 2-1 prints
@@ -18,7 +19,8 @@
 use traction_fluids::SpinTest;
 use traction_kinematics::{j2, j3, spin_factor, spin_group, tilted_disc_spin_per_speed};
 use traction_reproduce::tables::spin::{C2_HERTZ_C_TOL, C2_TOL};
-use traction_tests::rel_diff;
+use traction_tests::data::APPENDIX_VI;
+use traction_tests::{Csv, rel_diff};
 
 const GPA: f64 = 1e9;
 
@@ -129,21 +131,27 @@ fn table_2_6_spin_groups() {
 
 #[test]
 fn appendix_vi_dimensionless_spin_and_side_slip() {
-    // (m, μ, Z, k, printed J3): Appendix VI headers, printed to 9 digits.
-    let cases = [
-        (35.0, 0.075, 0.021, 5.0, 25.8161723),
-        (33.3, 0.051, 7.1e-3, 5.0, 12.2123202),
-        (46.9, 0.081, 7.1e-3, 5.0, 10.8295884),
-        (53.5, 0.083, 3e-3, 1.0, 2.27812588),
-    ];
-    for (m, mu, z, k, printed) in cases {
-        let j = j3(m, mu, k, z).unwrap();
-        // 1e-6: the report's program printed single-precision results (~7 digits).
-        assert!(rel_diff(j, printed) < 1e-6, "J3 {j} vs {printed}");
+    // Every row of the Appendix VI data (fluids/data): the printed J3 of its
+    // trace header from m, μ, k and Z = ω√(ab)/U, and its printed J2 from m,
+    // μ, k and ΔV/U. 1e-6 relative: the report's program printed
+    // single-precision results (~7 digits).
+    let t = Csv::parse("appendix_vi_spin_traces.csv", APPENDIX_VI);
+    assert!(t.rows.len() >= 70, "{} rows", t.rows.len());
+    for r in &t.rows {
+        let (m, mu, k) = (t.f(r, "m"), t.f(r, "mu"), t.f(r, "k"));
+        let (trace, printed_j3) = (t.s(r, "trace"), t.f(r, "J3"));
+        let j = j3(m, mu, k, t.f(r, "spin")).unwrap();
+        assert!(
+            rel_diff(j, printed_j3) < 1e-6,
+            "{trace}: J3 {j} vs {printed_j3}"
+        );
+        let printed_j2 = t.f(r, "J2");
+        let j = j2(m, mu, k, t.f(r, "dV_U")).unwrap();
+        assert!(
+            rel_diff(j, printed_j2) < 1e-6,
+            "{trace}: J2 {j} vs {printed_j2}"
+        );
     }
-    // Trace 79072704, DV/U = 2.74e-3 → J2 = 3.36839582.
-    let j = j2(35.0, 0.075, 5.0, 2.74e-3).unwrap();
-    assert!(rel_diff(j, 3.36839582) < 1e-6);
 }
 
 /// Second check of Table 2-5 with C computed by `traction-hertz` (exact Hertz
