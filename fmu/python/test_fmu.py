@@ -273,7 +273,7 @@ def test_viscoelastic_and_spin_peak_through_fmpy(fmu_path):
     callbacks = fmi2CallbackFunctions()
     callbacks.logger = fmi2CallbackLoggerTYPE(logger)
 
-    def run(reals, ints=(), bools=()):
+    def run(reals, ints=(), bools=(), outputs=("fx", "mz", "mu_force", "J4"), step=False):
         fmu = FMU2Slave(
             guid=md.guid, unzipDirectory=unzipped, modelIdentifier="TractionContact", instanceName="visco"
         )
@@ -289,7 +289,9 @@ def test_viscoelastic_and_spin_peak_through_fmpy(fmu_path):
         fmu.enterInitializationMode()
         try:
             fmu.exitInitializationMode()
-            return fmu.getReal([vr["fx"], vr["mz"], vr["mu_force"], vr["J4"]])
+            if step:
+                fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=0.01)
+            return fmu.getReal([vr[name] for name in outputs])
         finally:
             fmu.freeInstance()
 
@@ -310,21 +312,7 @@ def test_viscoelastic_and_spin_peak_through_fmpy(fmu_path):
     # Thermal contact: the film heats (temperature_rise > 0, read back
     # through FMPy) and the traction falls; off, the rise is exactly 0.
     def rise_and_fx(bools):
-        fmu = FMU2Slave(
-            guid=md.guid, unzipDirectory=unzipped, modelIdentifier="TractionContact", instanceName="thermal"
-        )
-        fmu.instantiate(callbacks=callbacks)
-        fmu.setupExperiment(startTime=0.0)
-        for name, x in bools:
-            fmu.setBoolean([vr[name]], [x])
-        fmu.setReal([vr["omega1"], vr["omega2"], vr["spin"]], [600.0, 270.0, 20.0])
-        fmu.enterInitializationMode()
-        try:
-            fmu.exitInitializationMode()
-            fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=0.01)
-            return fmu.getReal([vr["temperature_rise"], vr["fx"]])
-        finally:
-            fmu.freeInstance()
+        return run([], bools=bools, outputs=("temperature_rise", "fx"), step=True)
 
     cold = rise_and_fx([])
     hot = rise_and_fx([("thermal", True)])
