@@ -436,6 +436,67 @@ pub(crate) fn iteration_accuracy(accuracy: Accuracy) -> Accuracy {
     Accuracy::new((10.0 * accuracy.tol()).min(1e-2).max(accuracy.tol())).unwrap_or(accuracy)
 }
 
+/// The film thickness h (m) the thermal model `th` takes at `state` for a
+/// contact of `geometry` and `fluid` (if any): the given thickness, the Hamrock–Dowson
+/// film from the given η₀ and α, or (with [`Film::FromFluid`]) a report
+/// fluid's own η₀(θ) and α. A physical fluid's own film is set by its inlet
+/// state inside the contact's evaluation, not here: with [`Film::FromFluid`]
+/// it is an error, as for a user fluid.
+pub fn film_thickness(
+    th: &Thermal,
+    geometry: &traction_hertz::Geometry,
+    fluid: Option<&Fluid>,
+    state: &OperatingState,
+) -> Result<f64, ContactError> {
+    let props = match fluid {
+        Some(Fluid::Report { fluid, .. }) => Some(ThermalProperties::of(fluid.name)?),
+        _ => None,
+    };
+    film(th, geometry, props, None, state)
+}
+
+/// [`film_thickness`] with a physical fluid's own film (`physical_film`).
+fn film(
+    th: &Thermal,
+    g: &traction_hertz::Geometry,
+    props: Option<ThermalProperties>,
+    physical_film: Option<f64>,
+    state: &OperatingState,
+) -> Result<f64, ContactError> {
+    let hd = |viscosity: f64, pressure_viscosity: f64| {
+        hamrock_dowson_central(
+            1.0 / g.curvature_x,
+            g.e_prime,
+            g.k,
+            state.load,
+            state.rolling_speed.abs(),
+            viscosity,
+            pressure_viscosity,
+        )
+    };
+    match (th.film, physical_film, props) {
+        (Film::Thickness(h), _, _) => Ok(h),
+        (
+            Film::HamrockDowson {
+                viscosity,
+                pressure_viscosity,
+            },
+            _,
+            _,
+        ) => Ok(hd(viscosity, pressure_viscosity)),
+        (Film::FromFluid, Some(h), _) => Ok(h),
+        (Film::FromFluid, None, Some(p)) => Ok(hd(
+            p.viscosity(state.inlet_temperature_celsius),
+            p.pressure_viscosity,
+        )),
+        (Film::FromFluid, None, None) => Err(ContactError::OutOfRange {
+            quantity: "film thickness h (m)",
+            value: f64::NAN,
+            valid: "required for user m, μ: Film::Thickness or Film::HamrockDowson",
+        }),
+    }
+}
+
 /// The thermal model of one loaded state: temperature coefficients and the
 /// total resistance.
 #[derive(Debug, Clone, Copy)]
@@ -467,43 +528,8 @@ impl ContactThermal {
         let beta_m = from(th.slope_coefficient, props.map(|p| p.slope_coefficient));
         let k_f = from(th.fluid_conductivity, props.map(|p| p.conductivity));
         let g = contact.geometry();
+        let h = film(th, g, props, physical_film, state)?;
         let speed = state.rolling_speed.abs();
-        let h = match (th.film, physical_film, props) {
-            (Film::Thickness(h), _, _) => h,
-            (
-                Film::HamrockDowson {
-                    viscosity,
-                    pressure_viscosity,
-                },
-                _,
-                _,
-            ) => hamrock_dowson_central(
-                1.0 / g.curvature_x,
-                g.e_prime,
-                g.k,
-                state.load,
-                speed,
-                viscosity,
-                pressure_viscosity,
-            ),
-            (Film::FromFluid, Some(h), _) => h,
-            (Film::FromFluid, None, Some(p)) => hamrock_dowson_central(
-                1.0 / g.curvature_x,
-                g.e_prime,
-                g.k,
-                state.load,
-                speed,
-                p.viscosity(state.inlet_temperature_celsius),
-                p.pressure_viscosity,
-            ),
-            (Film::FromFluid, None, None) => {
-                return Err(ContactError::OutOfRange {
-                    quantity: "film thickness h (m)",
-                    value: f64::NAN,
-                    valid: "required for user m, μ: Film::Thickness or Film::HamrockDowson",
-                });
-            }
-        };
         let r_s = surfaces_resistance(
             hz.a,
             hz.b,

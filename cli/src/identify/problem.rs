@@ -94,40 +94,11 @@ impl Point {
     fn film_thickness(&self, th: &Thermal) -> Result<f64, String> {
         let g =
             traction_hertz::Geometry::new(&self.body1, &self.body2).map_err(|e| e.to_string())?;
-        let s = &self.state;
-        let hd = |viscosity: f64, alpha: f64| {
-            traction_contact::thermal::hamrock_dowson_central(
-                1.0 / g.curvature_x,
-                g.e_prime,
-                g.k,
-                s.load,
-                s.rolling_speed.abs(),
-                viscosity,
-                alpha,
-            )
-        };
-        match (th.film, &self.fluid) {
-            (Film::Thickness(h), _) => Ok(h),
-            (
-                Film::HamrockDowson {
-                    viscosity,
-                    pressure_viscosity,
-                },
-                _,
-            ) => Ok(hd(viscosity, pressure_viscosity)),
-            (_, Some(Fluid::Report { fluid, .. })) => {
-                let p = traction_fluids::ThermalProperties::of(fluid.name)
-                    .map_err(|e| e.to_string())?;
-                Ok(hd(
-                    p.viscosity(s.inlet_temperature_celsius),
-                    p.pressure_viscosity,
-                ))
-            }
-            _ => Err(
-                "film_factor: the row has no film thickness (film_thickness, or viscosity and pressure_viscosity)"
-                    .into(),
-            ),
-        }
+        let fluid = self.fluid.as_ref();
+        traction_contact::thermal::film_thickness(th, &g, fluid, &self.state).map_err(|_| {
+            "film_factor: the row has no film thickness (film_thickness, or viscosity and pressure_viscosity)"
+                .to_string()
+        })
     }
 }
 
@@ -282,16 +253,9 @@ pub(super) fn read_points(
                 // Given m, μ cells override the correlation (as in `traction
                 // contact`: the values at the inlet, the fluid supplying the
                 // temperature dependence and film of the thermal model).
-                let given = |c: &str| {
-                    if table.has(c) {
-                        table.opt_f64(row, c)
-                    } else {
-                        Ok(None)
-                    }
-                };
                 (
-                    Some(given("m")?.unwrap_or(e.m_used)),
-                    Some(given("mu")?.unwrap_or(e.mu_used)),
+                    Some(table.opt_f64(row, "m")?.unwrap_or(e.m_used)),
+                    Some(table.opt_f64(row, "mu")?.unwrap_or(e.mu_used)),
                     None,
                 )
             }
