@@ -319,13 +319,7 @@ fn solve_row(
 /// The optional thermal-property columns of a row into `th` (empty or absent
 /// cells keep the defaults; checked by the contact, errors name the quantity).
 pub(crate) fn thermal_columns(table: &Table, row: usize, th: &mut Thermal) -> Result<(), CliError> {
-    let col = |c: &str| -> Result<Option<f64>, CliError> {
-        if table.has(c) {
-            table.opt_f64(row, c)
-        } else {
-            Ok(None)
-        }
-    };
+    let col = |c: &str| table.opt_f64(row, c);
     if let Some(h) = col("film_thickness")? {
         th.film = Film::Thickness(h);
     }
