@@ -108,43 +108,87 @@ fn evaluate(
     c.evaluate(&s).map_err(|e| err("evaluation", e))
 }
 
-/// The Appendix VI rig of a trace: tilt (deg), Ry (m), offset (m), discs,
-/// P0 (Pa), inlet temperature (°C), fluid.
-type Rig = (f64, f64, f64, (Body, Body), f64, f64, FluidName);
+/// The Appendix VI rig of a trace.
+struct ViRig {
+    /// Tilt of the toroid axis, deg.
+    tilt_deg: f64,
+    /// Transverse radius Ry of the tilted disc, m.
+    ry: f64,
+    /// Offset of the tilt axis, m.
+    offset: f64,
+    /// The discs.
+    bodies: (Body, Body),
+    /// Hertz pressure, Pa.
+    p0: f64,
+    /// Inlet temperature, °C.
+    theta: f64,
+    /// Fluid.
+    fluid: FluidName,
+    /// Nominal aspect ratio of the discs (the correlations' k).
+    k: f64,
+    /// The printed m, μ were evaluated at another k than the discs': take
+    /// them from the correlations at this rig's k instead (the report's own
+    /// procedure for Table 4-1).
+    correlated_inputs: bool,
+}
 
 /// The rig of an Appendix VI trace.
-fn vi_rig(trace: &str) -> Result<Rig, ReproduceError> {
+///
+/// Trace 79072601 ran on the high-speed machine's k = 5 discs, not k = 1 as
+/// its Appendix VI header prints: its printed load and pressure (3000 N,
+/// 1.22 GPa) are the k = 5 discs' (the k = 1 discs give 2.47 GPa at 3000 N),
+/// 1.22 GPa is a test pressure of the k = 5 tests only, and the Appendix
+/// III-E listing gives test 790726-1 (20 m/s, 32.5 °C, 15°, 1.22 GPa, spin
+/// peak 0.084 as printed for the trace) ASPECT* = 0.51 (k = 5) and SPIN* =
+/// 0.59 (Z = 0.0092 = C''(k = 5, 15°)·1.22 GPa). The report's m = 53.5 and
+/// μ = 0.083 are its slope and spin-peak correlations at k = 1 (53.51,
+/// 0.0834 at Z = 0); at k = 5 they give 43.29 and 0.0873, which the
+/// prediction takes (`correlated_inputs`). The printed theory (k = 1) is
+/// reproduced unchanged by the isothermal table.
+fn vi_rig(trace: &str) -> Result<ViRig, ReproduceError> {
     let hs = |k| high_speed(k).ok_or_else(|| err("rig", "no disc"));
-    Ok(match trace {
-        "79072704" => (
-            30.0,
-            270e-3,
-            -205e-3,
-            hs(5.0)?,
-            1.45e9,
-            73.0,
-            FluidName::Santotrac50,
-        ),
-        "79100403" | "79100403-U20" => (
-            15.0,
-            270e-3,
-            -230e-3,
-            hs(5.0)?,
-            1.0e9,
-            50.0,
-            FluidName::Tdf88,
-        ),
-        "79072601" => (
-            15.0,
-            22.6e-3,
-            10.4e-3,
-            hs(1.0)?,
-            1.22e9,
-            32.5,
-            FluidName::Santotrac50,
-        ),
-        other => return Err(err("Appendix VI", format!("unknown trace {other}"))),
-    })
+    let rig = |tilt_deg, offset, p0, theta, fluid, correlated_inputs| -> Result<ViRig, _> {
+        Ok(ViRig {
+            tilt_deg,
+            ry: 270e-3,
+            offset,
+            bodies: hs(5.0)?,
+            p0,
+            theta,
+            fluid,
+            k: 5.0,
+            correlated_inputs,
+        })
+    };
+    match trace {
+        "79072704" => rig(30.0, -205e-3, 1.45e9, 73.0, FluidName::Santotrac50, false),
+        "79100403" | "79100403-U20" => rig(15.0, -230e-3, 1.0e9, 50.0, FluidName::Tdf88, false),
+        "79072601" => rig(15.0, -230e-3, 1.22e9, 32.5, FluidName::Santotrac50, true),
+        other => Err(err("Appendix VI", format!("unknown trace {other}"))),
+    }
+}
+
+/// The report's Table 4-1 inputs at a rig: the slope correlation (App.
+/// III-A/B) and the spin-peak correlation at zero spin (III-E/F) for μ.
+fn correlated_inputs(rig: &ViRig, speed: f64) -> Result<(f64, f64), ReproduceError> {
+    let f = match rig.fluid {
+        FluidName::Santotrac50 => traction_fluids::Fluid::santotrac_50(),
+        FluidName::Tdf88 => traction_fluids::Fluid::tdf_88(),
+    }
+    .map_err(|e| err("fluid correlations", e))?;
+    let q = traction_fluids::Query {
+        p0_pa: rig.p0,
+        speed_m_s: speed.abs(),
+        theta_celsius: rig.theta,
+        k: rig.k,
+        z: 0.0,
+    };
+    let at = |c: &traction_fluids::FluidCorrelation| {
+        c.evaluate(&q, traction_fluids::Policy::Strict)
+            .map(|e| e.value)
+            .map_err(|e| err("fluid correlations", e))
+    };
+    Ok((at(&f.slope)?, at(&f.spin_mu)?))
 }
 
 /// One Appendix VI point: (Fy/N) predicted at side slip ratio `dv_u`.
@@ -157,11 +201,20 @@ fn vi_point(
     dv_u: f64,
     beta: Option<[f64; 2]>,
 ) -> Result<f64, ReproduceError> {
-    let (alpha, ry, e_off, bodies, p0, theta, fluid) = vi_rig(trace)?;
-    let w_per_u = tilted_disc_spin_per_speed(alpha.to_radians(), ry, e_off)
+    let rig = vi_rig(trace)?;
+    let (m, mu) = if rig.correlated_inputs {
+        correlated_inputs(&rig, speed)?
+    } else {
+        (m, mu)
+    };
+    let w_per_u = tilted_disc_spin_per_speed(rig.tilt_deg.to_radians(), rig.ry, rig.offset)
         .map_err(|e| err("Appendix VI spin", e))?;
-    let c = contact(&bodies, fluid, m, mu, beta)?;
-    let load = c.geometry().at_p0(p0).map_err(|e| err("Hertz", e))?.load;
+    let c = contact(&rig.bodies, rig.fluid, m, mu, beta)?;
+    let load = c
+        .geometry()
+        .at_p0(rig.p0)
+        .map_err(|e| err("Hertz", e))?
+        .load;
     let sign = if positive { 1.0 } else { -1.0 };
     let e = evaluate(
         &c,
@@ -170,7 +223,7 @@ fn vi_point(
         0.0,
         dv_u * speed,
         sign * w_per_u * speed,
-        theta,
+        rig.theta,
     )?;
     Ok(e.traction_y)
 }
