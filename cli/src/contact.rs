@@ -19,7 +19,8 @@
 //! `viscosity` (inlet η₀, Pa·s) with `pressure_viscosity` (α, 1/Pa) for the
 //! Hamrock–Dowson film, `fluid_conductivity` (W/(m·K)), `disc_conductivity`
 //! (W/(m·K)), `disc_heat_capacity` (ρc, J/(m³·K)), `mu_temperature_coefficient`
-//! and `m_temperature_coefficient` (β = −d ln μ/dθ, −d ln m/dθ, 1/K). A user
+//! and `m_temperature_coefficient` (β = −d ln μ/dθ, −d ln m/dθ, 1/K),
+//! `mu_rise_scale` (T* of the second-order term of ln μ in the rise, K). A user
 //! fluid (`m,mu` only) needs `mu_temperature_coefficient`,
 //! `fluid_conductivity` and a film (`film_thickness`, or `viscosity` and
 //! `pressure_viscosity`); the report fluids have their own
@@ -71,7 +72,7 @@ pub const OUTPUT_COLUMNS: [&str; 19] = [
 ];
 
 /// Optional thermal-property columns (`--thermal`), SI units.
-pub const THERMAL_COLUMNS: [&str; 8] = [
+pub const THERMAL_COLUMNS: [&str; 9] = [
     "film_thickness",
     "viscosity",
     "pressure_viscosity",
@@ -80,6 +81,7 @@ pub const THERMAL_COLUMNS: [&str; 8] = [
     "disc_heat_capacity",
     "mu_temperature_coefficient",
     "m_temperature_coefficient",
+    "mu_rise_scale",
 ];
 
 /// Constitutive model.
@@ -238,7 +240,8 @@ pub struct ContactArgs {
     /// fluid (santotrac-50 | tdf-88) and/or m,mu (optional mu_spin); with
     /// --thermal optional film_thickness, viscosity, pressure_viscosity,
     /// fluid_conductivity, disc_conductivity, disc_heat_capacity,
-    /// mu_temperature_coefficient, m_temperature_coefficient (SI).
+    /// mu_temperature_coefficient, m_temperature_coefficient, mu_rise_scale
+    /// (SI).
     #[arg(long, default_value = "-")]
     pub input: String,
     /// Output CSV (`-` for stdout): the input columns followed by
@@ -353,6 +356,9 @@ pub(crate) fn thermal_columns(table: &Table, row: usize, th: &mut Thermal) -> Re
     }
     if let Some(b) = col("m_temperature_coefficient")? {
         th.slope_coefficient = Some(b);
+    }
+    if let Some(t) = col("mu_rise_scale")? {
+        th.mu_rise_scale = Some(t);
     }
     Ok(())
 }

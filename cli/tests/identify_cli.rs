@@ -594,13 +594,16 @@ fn appendix_vi_spin_trace_fitted() {
 }
 
 /// Trace 79072704 with the thermal contact: the report's m, μ at the inlet,
-/// Santotrac 50's own film and conductivity, β_μ fitted. `traction
-/// reproduce` identified β_μ = 0.0025 1/K on this trace with the
-/// high-speed machine's discs and both rolling directions; here the discs
-/// are the exact-k pair of the same P0 at 5000 N, so the value may differ
-/// (measured 0.00270 ± 0.00018, RMS 1.5e-3 in Fy/Fz), but it must be of that
-/// order and fit the trace better than the report's spin-peak method (RMS
-/// 0.0069 in Fy/Fz, i.e. 0.198 in J5·μ_s units).
+/// Santotrac 50's own film and conductivity, the temperature scale T* of its
+/// second-order law fitted. `traction reproduce` identified T* = 480 K on
+/// this trace with the high-speed machine's discs and both rolling
+/// directions (a scan in steps of 40 K); here the discs are the exact-k pair
+/// of the same P0 at 5000 N and the fit is Levenberg–Marquardt, so the
+/// value may differ (measured 467 ± 19 K, RMS 1.5e-3 in Fy/Fz), but it must
+/// be of that order and fit the trace better than the report's spin-peak
+/// method (RMS 0.0069 in Fy/Fz, i.e. 0.198 in J5·μ_s units). With that T*
+/// the first-order coefficient β_μ fitted alone is zero within its error
+/// (measured 0.00015 ± 0.00021 1/K).
 #[test]
 fn appendix_vi_spin_trace_thermal_coefficient() {
     let (csv, _) = appendix_vi_csv("79072704", 1.45e9, 73.0);
@@ -609,24 +612,22 @@ fn appendix_vi_spin_trace_thermal_coefficient() {
     for l in lines {
         with_fluid.push_str(&format!("{l},santotrac-50\n"));
     }
-    let (ok, out, err) = run(
-        &[
-            "identify",
-            "--input",
-            "-",
-            "--thermal",
-            "--fit",
-            "mu_temperature_coefficient",
-        ],
-        &with_fluid,
-    );
-    assert!(ok, "{err}");
-    eprintln!("{out}{err}");
-    let (b, se) = value(&params(&out), "mu_temperature_coefficient");
-    assert!((0.0015..0.0040).contains(&b), "{b} ± {se}");
-    assert!(se < 0.2 * b, "{b} ± {se}");
-    let rms = rms_residual(&err);
+    let fit = |name: &str| {
+        let (ok, out, err) = run(
+            &["identify", "--input", "-", "--thermal", "--fit", name],
+            &with_fluid,
+        );
+        assert!(ok, "{err}");
+        eprintln!("{out}{err}");
+        let (v, se) = value(&params(&out), name);
+        (v, se, rms_residual(&err))
+    };
+    let (t, se, rms) = fit("mu_rise_scale");
+    assert!((400.0..600.0).contains(&t), "{t} ± {se}");
+    assert!(se < 0.1 * t, "{t} ± {se}");
     assert!(rms < 0.0069, "{rms}");
+    let (b, se, _) = fit("mu_temperature_coefficient");
+    assert!(b.abs() < 3.0 * se.max(1e-4), "{b} ± {se}");
 }
 
 #[test]

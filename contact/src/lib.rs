@@ -112,7 +112,8 @@
 //! The film's mid-plane temperature rise ΔT from the contact's own loss P
 //! (flash temperature of the two moving surfaces + conduction across the
 //! film), with μ and m at θ + ΔT, solved self-consistently:
-//! `ΔT = (P/(πab))·(R_s + h/(8k_f))`, `μ = μ(θ)e^(−β_μΔT)`, `m = m(θ)e^(−β_mΔT)`.
+//! `ΔT = (P/(πab))·(R_s + h/(8k_f))`,
+//! `μ = μ(θ)e^(−β_μ(ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*²)`, `m = m(θ)e^(−β_mΔT)`.
 //! Equations, sources and ranges in [`thermal`]; the result's
 //! [`Evaluation::temperature_rise`], `m_used`, `mu_used` are at θ + ΔT.
 //!

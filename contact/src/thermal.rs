@@ -48,11 +48,18 @@
 //! ([`Film::HamrockDowson`]). It is set by the inlet and does not change with
 //! the film's temperature rise.
 //!
-//! The fluid at the raised temperature: `μ(ΔT) = μ e^(−β_μ (ΔT − ΔT_peak))`,
-//! `m(ΔT) = m e^(−β_m ΔT)` (for [`crate::Fluid::Physical`]: τ̄ and Ḡ), with
-//! the temperature coefficients β given by the user ([`Thermal::mu_coefficient`])
-//! or, for the report fluids, their identified values
-//! (traction-fluids `ThermalProperties`, one set per fluid). `ΔT_peak` is the
+//! The fluid at the raised temperature: ln μ to second order in the rise,
+//!
+//! ```text
+//! μ(ΔT) = μ e^(−β_μ (ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*²),   m(ΔT) = m e^(−β_m ΔT)
+//! ```
+//!
+//! (for [`crate::Fluid::Physical`]: τ̄ and Ḡ), with the first-order
+//! coefficients β and the second-order temperature scale T*
+//! ([`Thermal::mu_rise_scale`]) given by the user ([`Thermal::mu_coefficient`];
+//! no second-order term unless given) or, for the report fluids, their
+//! identified values (traction-fluids `ThermalProperties`, one set per fluid:
+//! β_μ = 0 and T* alone, docs/decisions/0023). `ΔT_peak` is the
 //! rise of the measurement that defined μ ([`Thermal::mu_at_traction_peak`]):
 //! a zero-spin side-slip trace at its peak (reduced slip S = 3, [`PEAK_REDUCED_SLIP`],
 //! loss μ N ΔV), since a measured peak μ already carries its own heating; 0
@@ -151,6 +158,11 @@ pub struct Thermal {
     /// coefficient (of τ̄ for a physical fluid), 1/K (None: the report
     /// fluid's identified value).
     pub mu_coefficient: Option<f64>,
+    /// Temperature scale T* of the second-order term of ln μ in the rise, K:
+    /// μ(ΔT) = μ e^(−β_μ (ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*²) (see the
+    /// module docs). None: the report fluid's identified value; for a user
+    /// fluid no second-order term (T* = ∞).
+    pub mu_rise_scale: Option<f64>,
     /// Temperature coefficient β_m = −d ln m/dθ of the traction slope (of Ḡ
     /// for a physical fluid), 1/K (None: the report fluid's value; 0 for a
     /// user fluid).
@@ -171,6 +183,7 @@ impl Default for Thermal {
             disc_conductivity: STEEL_CONDUCTIVITY,
             disc_heat_capacity: STEEL_HEAT_CAPACITY,
             mu_coefficient: None,
+            mu_rise_scale: None,
             slope_coefficient: None,
             mu_at_traction_peak: true,
         }
@@ -195,6 +208,9 @@ pub const FILM_THICKNESS_RANGE: Range = Range::open(0.0, 1e-3).closed_above().wi
 pub const VISCOSITY_RANGE: Range = Range::open(0.0, 1e6).closed_above().with_unit("Pa·s");
 /// Valid pressure–viscosity coefficients α of the Hamrock–Dowson film.
 pub const PRESSURE_VISCOSITY_RANGE: Range = Range::closed(0.0, 1e-6).with_unit("1/Pa");
+/// Valid temperature scales T* of the second-order term of ln μ: positive,
+/// +∞ accepted (no second-order term).
+pub const RISE_SCALE_RANGE: Range = Range::greater_than(0.0).with_infinity().with_unit("K");
 /// Valid temperature coefficients β_μ, β_m: |β| ≤ [`MAX_TEMPERATURE_COEFFICIENT`].
 pub const TEMPERATURE_COEFFICIENT_RANGE: Range =
     Range::closed(-MAX_TEMPERATURE_COEFFICIENT, MAX_TEMPERATURE_COEFFICIENT).with_unit("1/K");
@@ -221,6 +237,9 @@ impl Thermal {
                     .check("pressure–viscosity coefficient α", pressure_viscosity)?;
             }
             Film::FromFluid => {}
+        }
+        if let Some(t) = self.mu_rise_scale {
+            RISE_SCALE_RANGE.check("temperature scale T* of μ", t)?;
         }
         for (q, v) in [
             ("temperature coefficient β_μ of μ", self.mu_coefficient),
@@ -503,6 +522,8 @@ fn film(
 pub(crate) struct ContactThermal {
     beta_mu: f64,
     beta_m: f64,
+    /// 1/T*² of the second-order term of ln μ, 1/K² (0: none).
+    inv_scale_sq: f64,
     /// (R_s + R_f)/(πab): temperature rise per watt of loss, K/W.
     rise_per_watt: f64,
     /// Rise of the reference traction peak, K (0 unless `mu_at_traction_peak`).
@@ -526,6 +547,10 @@ impl ContactThermal {
         let from = |user: Option<f64>, fluid: Option<f64>| user.or(fluid).unwrap_or(0.0);
         let beta_mu = from(th.mu_coefficient, props.map(|p| p.mu_coefficient));
         let beta_m = from(th.slope_coefficient, props.map(|p| p.slope_coefficient));
+        let scale = th
+            .mu_rise_scale
+            .or(props.map(|p| p.mu_rise_scale))
+            .unwrap_or(f64::INFINITY);
         let k_f = from(th.fluid_conductivity, props.map(|p| p.conductivity));
         let g = contact.geometry();
         let h = film(th, g, props, physical_film, state)?;
@@ -561,6 +586,7 @@ impl ContactThermal {
         Ok(ContactThermal {
             beta_mu,
             beta_m,
+            inv_scale_sq: (scale * scale).recip(),
             rise_per_watt: (r_s + r_f) / area,
             reference_rise,
         })
@@ -568,9 +594,10 @@ impl ContactThermal {
 
     /// Factors (m, μ) at a temperature rise `dt`.
     pub(crate) fn factors(&self, dt: f64) -> (f64, f64) {
+        let r = self.reference_rise;
         (
             (-self.beta_m * dt).exp(),
-            (-self.beta_mu * (dt - self.reference_rise)).exp(),
+            (-self.beta_mu * (dt - r) - (dt * dt - r * r) * self.inv_scale_sq).exp(),
         )
     }
 

@@ -197,6 +197,61 @@ fn report_fluid_with_inlet_values_and_spin() {
     assert!(e.mu_used < 0.075 && e.fy.is_finite());
 }
 
+/// The second-order law μ(ΔT) = μ e^(−ΔT²/T*²) (β_μ = 0, no reference
+/// peak): the converged rise equals the root found by bisection on an
+/// isothermal contact at μ(ΔT), as for the first-order law above.
+#[test]
+fn second_order_law_matches_an_independent_solve() {
+    let (m, mu, scale) = (57.6, 0.0956, 60.0);
+    let th = Thermal {
+        mu_rise_scale: Some(scale),
+        ..user_thermal(0.0)
+    };
+    let c = contact(Fluid::constant(m, mu).unwrap(), Some(th));
+    let s = state(20.0, 0.0, 0.2, 0.0);
+    let e = c.evaluate(&s).unwrap();
+    let dt = e.temperature_rise;
+    assert!(dt > 10.0, "{dt}");
+    let factor = |dt: f64| (-(dt / scale).powi(2)).exp();
+    assert!((e.mu_used / (mu * factor(dt)) - 1.0).abs() < 1e-12);
+    let rise = |dt: f64| -> f64 {
+        let iso = contact(Fluid::constant(m, mu * factor(dt)).unwrap(), None);
+        let r: Evaluation = iso.evaluate(&s).unwrap();
+        let rs = thermal::surfaces_resistance(
+            r.a,
+            r.b,
+            20.0,
+            0.0,
+            0.2,
+            th.disc_conductivity,
+            th.disc_heat_capacity,
+        );
+        (rs + 0.5e-6 / (8.0 * 0.11)) * r.loss / (std::f64::consts::PI * r.a * r.b)
+    };
+    // Tolerance: the solver's own (closed form at zero spin, exact).
+    let tol = TEMPERATURE_TOLERANCE.max(TEMPERATURE_RELATIVE_TOLERANCE * dt);
+    let (mut lo, mut hi) = (0.0, 1000.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if mid - rise(mid) < 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    assert!((0.5 * (lo + hi) - dt).abs() <= tol, "{lo} vs {dt}");
+    // T* = ∞ is no second-order term: the isothermal contact (β_μ = 0).
+    let none = contact(
+        Fluid::constant(m, mu).unwrap(),
+        Some(Thermal {
+            mu_rise_scale: Some(f64::INFINITY),
+            ..th
+        }),
+    );
+    let iso = contact(Fluid::constant(m, mu).unwrap(), None);
+    assert_eq!(none.evaluate(&s).unwrap().fy, iso.evaluate(&s).unwrap().fy);
+}
+
 fn msg(e: ContactError) -> String {
     e.to_string()
 }
@@ -276,6 +331,20 @@ fn bad_thermal_input_names_the_quantity() {
                 ..base
             },
             "film thickness",
+        ),
+        (
+            Thermal {
+                mu_rise_scale: Some(0.0),
+                ..base
+            },
+            "temperature scale T*",
+        ),
+        (
+            Thermal {
+                mu_rise_scale: Some(f64::NAN),
+                ..base
+            },
+            "temperature scale T*",
         ),
     ];
     for (th, name) in cases {

@@ -20,8 +20,11 @@ pub struct ThermalProperties {
     pub pressure_viscosity: f64,
     /// Thermal conductivity k_f, W/(m·K).
     pub conductivity: f64,
-    /// β_μ = −d ln μ/dθ, 1/K.
+    /// β_μ = −d ln μ/dθ (first-order term of ln μ in the rise), 1/K.
     pub mu_coefficient: f64,
+    /// Temperature scale T* of the second-order term of ln μ in the rise, K
+    /// (μ falls by e^(−(ΔT/T*)²) from the reference; infinite: none).
+    pub mu_rise_scale: f64,
     /// β_m = −d ln m/dθ, 1/K.
     pub slope_coefficient: f64,
 }
@@ -58,13 +61,13 @@ impl ThermalProperties {
                 continue;
             }
             let f: Vec<&str> = line.split(',').collect();
-            if f.len() != 7 {
-                return Err(bad(no, format!("expected 7 fields in `{line}`")));
+            if f.len() != 8 {
+                return Err(bad(no, format!("expected 8 fields in `{line}`")));
             }
             if f[0] != name.slug() {
                 continue;
             }
-            let mut v = [0.0; 6];
+            let mut v = [0.0; 7];
             for (i, s) in f[1..].iter().enumerate() {
                 v[i] = s
                     .trim()
@@ -78,6 +81,7 @@ impl ThermalProperties {
                 conductivity: v[3],
                 mu_coefficient: v[4],
                 slope_coefficient: v[5],
+                mu_rise_scale: v[6],
             });
         }
         Err(bad(0, format!("no row for {}", name.slug())))
@@ -103,6 +107,9 @@ mod tests {
             assert!(p.pressure_viscosity > 5e-9 && p.pressure_viscosity < 5e-8);
             assert!(p.conductivity > 0.05 && p.conductivity < 0.3);
             assert!(p.mu_coefficient >= 0.0 && p.mu_coefficient < 0.1);
+            // T* far above the rises of slow side-slip traces (tens of K),
+            // finite: the report's 80 m/s spin traces need one.
+            assert!(p.mu_rise_scale > 100.0 && p.mu_rise_scale < 5000.0);
             // The interpolation passes through both data points.
             assert!((p.viscosity(40.0) / p.viscosity_40c - 1.0).abs() < 1e-12);
             assert!((p.viscosity(100.0) / p.viscosity_100c - 1.0).abs() < 1e-12);

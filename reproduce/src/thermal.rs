@@ -51,14 +51,25 @@ fn high_speed(k: f64) -> Option<(Body, Body)> {
     Some((Body::steel(33e-3, ry), Body::steel(71.4e-3, f64::INFINITY)))
 }
 
+/// A temperature law of μ for identification studies: ln μ(ΔT) − ln μ =
+/// −β_μ (ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*² (traction-contact `Thermal`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Law {
+    /// First-order coefficient β_μ, 1/K.
+    pub mu_coefficient: f64,
+    /// Second-order temperature scale T*, K (+∞: none).
+    pub mu_rise_scale: f64,
+}
+
 /// Options of every thermal prediction: the report's isothermal defaults plus
 /// the thermal model with the fluid's own properties (optionally another
-/// β_μ, for identification studies).
-pub fn options(mu_coefficient: Option<f64>) -> Options {
+/// temperature law of μ, for identification studies).
+pub fn options(law: Option<Law>) -> Options {
     Options {
         classify_regime: false,
         thermal: Some(Thermal {
-            mu_coefficient,
+            mu_coefficient: law.map(|l| l.mu_coefficient),
+            mu_rise_scale: law.map(|l| l.mu_rise_scale),
             ..Thermal::default()
         }),
         ..Options::default()
@@ -71,11 +82,11 @@ fn contact(
     fluid: FluidName,
     m: f64,
     mu: f64,
-    beta: Option<[f64; 2]>,
+    law: Option<[Law; 2]>,
 ) -> Result<TractionContact, ReproduceError> {
-    let opts = options(beta.map(|b| match fluid {
-        FluidName::Santotrac50 => b[0],
-        FluidName::Tdf88 => b[1],
+    let opts = options(law.map(|l| match fluid {
+        FluidName::Santotrac50 => l[0],
+        FluidName::Tdf88 => l[1],
     }));
     let rule = traction_contact::EnvelopeRule::Clamp;
     let f = match fluid {
@@ -199,7 +210,7 @@ fn vi_point(
     mu: f64,
     speed: f64,
     dv_u: f64,
-    beta: Option<[f64; 2]>,
+    law: Option<[Law; 2]>,
 ) -> Result<f64, ReproduceError> {
     let rig = vi_rig(trace)?;
     let (m, mu) = if rig.correlated_inputs {
@@ -209,7 +220,7 @@ fn vi_point(
     };
     let w_per_u = tilted_disc_spin_per_speed(rig.tilt_deg.to_radians(), rig.ry, rig.offset)
         .map_err(|e| err("Appendix VI spin", e))?;
-    let c = contact(&rig.bodies, rig.fluid, m, mu, beta)?;
+    let c = contact(&rig.bodies, rig.fluid, m, mu, law)?;
     let load = c
         .geometry()
         .at_p0(rig.p0)
@@ -230,7 +241,7 @@ fn vi_point(
 
 /// Appendix VI: thermal J5 = (Fy/Fz)/μ_spin per data row (the table's
 /// measured normalisation), and per trace the (ΔV/U, Fy/Fz) line.
-pub fn appendix_vi(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
+pub fn appendix_vi(law: Option<[Law; 2]>) -> Result<Vec<f64>, ReproduceError> {
     let t = DataTable::parse("appendix_vi_spin_traces.csv", APPENDIX_VI)?;
     let c = |n| t.col(n);
     let (ct, cm, cmu, cms, cu, cdir, cdv) = (
@@ -252,7 +263,7 @@ pub fn appendix_vi(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
                 t.num(i, cmu)?,
                 t.num(i, cu)?,
                 t.num(i, cdv)?,
-                beta,
+                law,
             )?;
             Ok(fy / t.num(i, cms)?)
         })
@@ -319,10 +330,10 @@ fn vii_point(
     mu: f64,
     du_u: f64,
     dv_u: f64,
-    beta: Option<[f64; 2]>,
+    law: Option<[Law; 2]>,
 ) -> Result<Evaluation, ReproduceError> {
     let bodies = low_speed(k).ok_or_else(|| err("VII", format!("no disc for k = {k}")))?;
-    let c = contact(&bodies, FluidName::Santotrac50, m, mu, beta)?;
+    let c = contact(&bodies, FluidName::Santotrac50, m, mu, law)?;
     let load = c
         .geometry()
         .at_p0(table_4_2_p0(k)?)
@@ -332,7 +343,7 @@ fn vii_point(
 }
 
 /// Appendix VII-A: thermal J5 = (Fy/N)/μ per data row.
-pub fn appendix_vii_a(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
+pub fn appendix_vii_a(law: Option<[Law; 2]>) -> Result<Vec<f64>, ReproduceError> {
     let t = DataTable::parse("appendix_vii_a_side_slip.csv", APPENDIX_VII_A)?;
     let c = |n| t.col(n);
     let (ck, cm, cmu, cxf, ccm) = (c("k")?, c("m")?, c("mu")?, c("xf")?, c("cm")?);
@@ -341,7 +352,7 @@ pub fn appendix_vii_a(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError
         .map(|i| {
             let mu = t.num(i, cmu)?;
             let dv_u = t.num(i, cxf)? * t.num(i, ccm)?;
-            let e = vii_point(t.num(i, ck)?, t.num(i, cm)?, mu, 0.0, dv_u, beta)?;
+            let e = vii_point(t.num(i, ck)?, t.num(i, cm)?, mu, 0.0, dv_u, law)?;
             Ok(e.traction_y / mu)
         })
         .collect()
@@ -392,7 +403,7 @@ fn vii_b_dv_u(j2: f64, m: f64, mu: f64, k: f64) -> f64 {
 }
 
 /// Appendix VII-B: thermal J4 = (Fx/N)/μ per data row.
-pub fn appendix_vii_b(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
+pub fn appendix_vii_b(law: Option<[Law; 2]>) -> Result<Vec<f64>, ReproduceError> {
     let t = DataTable::parse("appendix_vii_b_combined_slip.csv", APPENDIX_VII_B)?;
     let c = |n| t.col(n);
     let (ck, cm, cmu, cxf, ccm, cj2) = (c("k")?, c("m")?, c("mu")?, c("xf")?, c("cm")?, c("J2")?);
@@ -402,7 +413,7 @@ pub fn appendix_vii_b(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError
             let (k, m, mu) = (t.num(i, ck)?, t.num(i, cm)?, t.num(i, cmu)?);
             let du_u = t.num(i, cxf)? * t.num(i, ccm)?;
             let dv_u = vii_b_dv_u(t.num(i, cj2)?, m, mu, k);
-            let e = vii_point(k, m, mu, du_u, dv_u, beta)?;
+            let e = vii_point(k, m, mu, du_u, dv_u, law)?;
             Ok(e.traction_x / mu)
         })
         .collect()
@@ -462,7 +473,7 @@ pub fn appendix_vii_b_series(figures: &mut [Figure]) -> Result<(), ReproduceErro
 /// Appendix I: thermal J5 = (Fy/Fz)/μ per data point (traces in file order).
 /// The rig of each trace is the machine whose Hertz load at the printed P0 is
 /// closest to the printed load (low-speed k = 0.5..5 or high-speed k = 1, 5).
-pub fn appendix_i(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
+pub fn appendix_i(law: Option<[Law; 2]>) -> Result<Vec<f64>, ReproduceError> {
     let pts = traction_fluids::appendix_i_traces().map_err(|e| err("Appendix I data", e))?;
     pts.par_iter()
         .map(|p| {
@@ -474,7 +485,7 @@ pub fn appendix_i(beta: Option<[f64; 2]>) -> Result<Vec<f64>, ReproduceError> {
             let p0 = p.p0_gpa * 1e9;
             let mut best: Option<(f64, TractionContact, f64)> = None;
             for bodies in [low_speed(p.k), high_speed(p.k)].into_iter().flatten() {
-                let c = contact(&bodies, fluid, p.m, p.mu, beta)?;
+                let c = contact(&bodies, fluid, p.m, p.mu, law)?;
                 let load = c.geometry().at_p0(p0).map_err(|e| err("Hertz", e))?.load;
                 let d = (load / p.fz_n).ln().abs();
                 if best.as_ref().is_none_or(|b| d < b.0) {
@@ -600,7 +611,7 @@ fn peak_over_slip(
 /// isothermal J+T model's peak is μ itself at every side slip and spin (J4 →
 /// 1 as ΔU/U grows), so the measured fall of the peak with side slip is what
 /// the thermal model is judged on.
-pub fn appendix_vii_e(beta: Option<[f64; 2]>) -> Result<Vec<VIIEPeak>, ReproduceError> {
+pub fn appendix_vii_e(law: Option<[Law; 2]>) -> Result<Vec<VIIEPeak>, ReproduceError> {
     let pts = traction_fluids::appendix_vii_e().map_err(|e| err("Appendix VII-E data", e))?;
     let reference = |p: &traction_fluids::CombinedSlipPoint| {
         pts.iter().find(|q| {
@@ -622,7 +633,7 @@ pub fn appendix_vii_e(beta: Option<[f64; 2]>) -> Result<Vec<VIIEPeak>, Reproduce
             };
             let m = r.m.ok_or_else(|| err("Appendix VII-E", "no m"))?;
             let bodies = low_speed(p.k).ok_or_else(|| err("VII-E", format!("k = {}", p.k)))?;
-            let c = contact(&bodies, fluid, m, r.mu, beta)?;
+            let c = contact(&bodies, fluid, m, r.mu, law)?;
             let hz = c
                 .geometry()
                 .at_p0(p.p0_gpa * 1e9)

@@ -2,12 +2,15 @@
 //! the RMS deviations (J units, the tables' own normalisation) with one
 //! parameter set per fluid (`fluids/data/thermal_properties.csv`).
 //!
-//! Identification: Santotrac 50's β_μ = 0.0025 1/K on trace 79072704 (both
-//! directions) alone; TDF-88's β_μ = 0.001 1/K jointly on trace 79100403
-//! (80 m/s) and the TDF-88 peaks of Appendix VII-E. All other traces are
-//! predictions (among them the 64 Santotrac 50 peaks of Appendix VII-E). Margins: 5 % of each measured value (the
-//! figures change only when the model or its data change; 5 % leaves room for
-//! the rheology's accuracy, 1e-4 in J).
+//! Identification (μ(ΔT) = μ e^(−(ΔT² − ΔT_peak²)/T*²), docs/decisions/0023):
+//! Santotrac 50's T* = 480 K on trace 79072704 (both directions) alone;
+//! TDF-88's T* = 575 K jointly on trace 79100403 (80 m/s) and the TDF-88
+//! peaks of Appendix VII-E. All other traces are predictions (among them
+//! Appendix I, VII-A, VII-B and the 64 Santotrac 50 peaks of Appendix VII-E).
+//! Margins: 5 % of each measured value (the figures change only when the
+//! model or its data change; 5 % leaves room for the rheology's accuracy,
+//! 1e-4 in J).
+#![allow(clippy::unwrap_used)] // test: a failed unwrap is a failed test
 
 use traction_reproduce::thermal;
 
@@ -44,7 +47,7 @@ fn thermal_predictions_against_the_measurements() {
     );
     println!("79072704: thermal {t:.4}, spin-peak (printed J5) {sp:.4}");
     // Measured 0.0443 (identification trace): goal ≤ 0.06 and better than the
-    // report's spin-peak method.
+    // report's spin-peak method (0.176 on the printed J5).
     assert!(t <= 0.06 && t < sp, "79072704 thermal RMS {t}");
     let idx: Vec<usize> = (0..vi.rows.len())
         .filter(|&i| vi.str(i, ct) == "79072601")
@@ -52,37 +55,46 @@ fn thermal_predictions_against_the_measurements() {
     let pick = |v: &[f64]| idx.iter().map(|&i| v[i]).collect::<Vec<_>>();
     let t = rms(&pick(&pred), &pick(&meas));
     println!("79072601 (k = 5 discs): thermal {t:.4}");
-    // Measured 0.1513 (0.250 on the printed k = 1 discs).
-    assert!(t < 0.1513 * 1.05, "79072601 thermal RMS {t}");
+    // Measured 0.1361 (0.250 on the printed k = 1 discs, isothermal 0.132).
+    assert!(t < 0.1361 * 1.05, "79072601 thermal RMS {t}");
     let all = rms(&pred, &meas);
     println!("Appendix VI all traces: thermal {all:.4}");
-    // Measured 0.1062 (spin-peak 0.182).
-    assert!(all < 0.1062 * 1.05, "{all}");
+    // Measured 0.0994 (spin-peak 0.182; the goal of halving it, 0.091, is
+    // not met: 79100403 and 79072601 hold it, contact README).
+    assert!(all < 0.0994 * 1.05, "{all}");
     let a = DataTable::parse("appendix_vii_a_side_slip.csv", APPENDIX_VII_A).unwrap();
     let ma: Vec<f64> = (0..a.rows.len())
         .map(|i| a.num(i, a.col("J5_act").unwrap()).unwrap())
         .collect();
     let ra = rms(&thermal::appendix_vii_a(None).unwrap(), &ma);
     println!("VII-A: thermal {ra:.4}");
-    // Measured 0.0329 (isothermal 0.0125): a prediction, guarded from growing.
-    assert!(ra < 0.0329 * 1.05, "{ra}");
+    // Measured 0.0111 (isothermal 0.0125): a prediction; the guard (0.0117)
+    // lies inside the goal of at most 10 % above the isothermal fit (0.0138).
+    assert!(ra < 0.0111 * 1.05, "{ra}");
+    let pts = traction_fluids::appendix_i_traces().unwrap();
+    let mi: Vec<f64> = pts.iter().map(|p| p.j5).collect();
+    let ri = rms(&thermal::appendix_i(None).unwrap(), &mi);
+    println!("Appendix I: thermal {ri:.4}");
+    // Measured 0.0167 (isothermal 0.0182): the guard (0.0175) lies inside the
+    // goal of at most 10 % above the isothermal fit (0.0200).
+    assert!(ri < 0.0167 * 1.05, "{ri}");
 }
 
 /// Appendix VII-E: the peak traction coefficient falls with side slip (by up
 /// to 30 % at 2 %); the isothermal J+T peak does not (it is μ at every side
 /// slip), the thermal contact follows it. Relative to the zero-spin,
 /// zero-side-slip μ of the same fluid, P0, k; measured RMS (isothermal /
-/// thermal): Santotrac 50 (a prediction: its β_μ comes from 79072704)
-/// 0.125 / 0.080 without spin, 0.143 / 0.082 with 6° spin; TDF-88 (its β_μ
-/// identified on these and 79100403) 0.134 / 0.052, 0.110 / 0.049. Margin 5 %.
+/// thermal): Santotrac 50 (a prediction: its T* comes from 79072704)
+/// 0.125 / 0.060 without spin, 0.143 / 0.082 with 6° spin; TDF-88 (its T*
+/// identified on these and 79100403) 0.134 / 0.074, 0.110 / 0.060. Margin 5 %.
 #[test]
 fn appendix_vii_e_peaks_fall_with_side_slip() {
     let peaks = thermal::appendix_vii_e(None).unwrap();
     for (fluid, spin, iso_rms, thermal_rms) in [
-        ("Santotrac", false, 0.1251, 0.0797),
-        ("Santotrac", true, 0.1430, 0.0816),
-        ("TDF", false, 0.1336, 0.0522),
-        ("TDF", true, 0.1102, 0.0486),
+        ("Santotrac", false, 0.1251, 0.0604),
+        ("Santotrac", true, 0.1430, 0.0815),
+        ("TDF", false, 0.1336, 0.0740),
+        ("TDF", true, 0.1102, 0.0602),
     ] {
         let sel: Vec<_> = peaks
             .iter()
@@ -156,4 +168,66 @@ fn trace_79072601_ran_on_the_k5_discs() {
         (m - 53.5).abs() <= 0.05 && (mu - 0.083).abs() <= 0.0005,
         "{m} {mu}"
     );
+}
+
+fn vi_trace_rms(law: Option<[thermal::Law; 2]>, trace: &str) -> f64 {
+    use traction_reproduce::data::{APPENDIX_VI, DataTable};
+    let vi = DataTable::parse("appendix_vi_spin_traces.csv", APPENDIX_VI).unwrap();
+    let (ct, cfy, cms) = (
+        vi.col("trace").unwrap(),
+        vi.col("FyFz_exp").unwrap(),
+        vi.col("mu_spin").unwrap(),
+    );
+    let pred = thermal::appendix_vi(law).unwrap();
+    let idx: Vec<usize> = (0..vi.rows.len())
+        .filter(|&i| vi.str(i, ct) == trace)
+        .collect();
+    let meas: Vec<f64> = idx
+        .iter()
+        .map(|&i| vi.num(i, cfy).unwrap() / vi.num(i, cms).unwrap())
+        .collect();
+    rms(&idx.iter().map(|&i| pred[i]).collect::<Vec<_>>(), &meas)
+}
+
+fn vii_a_rms(law: Option<[thermal::Law; 2]>) -> f64 {
+    use traction_reproduce::data::{APPENDIX_VII_A, DataTable};
+    let a = DataTable::parse("appendix_vii_a_side_slip.csv", APPENDIX_VII_A).unwrap();
+    let ma: Vec<f64> = (0..a.rows.len())
+        .map(|i| a.num(i, a.col("J5_act").unwrap()).unwrap())
+        .collect();
+    rms(&thermal::appendix_vii_a(law).unwrap(), &ma)
+}
+
+/// Santotrac 50's T* = 480 K is the identified minimum on trace 79072704
+/// (RMS 0.0443; 0.0510 at 440 K, 0.0496 at 520 K). The first-order law
+/// (T* = ∞) cannot serve this trace and Appendix VII-A together: β_μ =
+/// 0.0008 1/K keeps VII-A within 10 % of the isothermal fit (0.0131 ≤
+/// 0.0138) but leaves the trace at 0.194 (goal 0.06);
+/// β_μ = 0.0025 1/K fits the trace (0.044) and takes VII-A to 0.033
+/// (docs/decisions/0023).
+#[test]
+fn santotrac_rise_scale_is_the_identified_minimum_and_the_first_order_law_is_not_enough() {
+    let law = |b: f64, t: f64| {
+        let l = thermal::Law {
+            mu_coefficient: b,
+            mu_rise_scale: t,
+        };
+        // TDF-88 at its own identified value.
+        let tdf = thermal::Law {
+            mu_coefficient: 0.0,
+            mu_rise_scale: 575.0,
+        };
+        Some([l, tdf])
+    };
+    let at = |t: f64| vi_trace_rms(law(0.0, t), "79072704");
+    let (lo, best, hi) = (at(440.0), at(480.0), at(520.0));
+    println!("79072704 at T* = 440, 480, 520 K: {lo:.4} {best:.4} {hi:.4}");
+    assert!(best < lo && best < hi, "{lo} {best} {hi}");
+    for (b, trace_above, vii_a_within) in [(0.0008, true, true), (0.0025, false, false)] {
+        let l = law(b, f64::INFINITY);
+        let (t, a) = (vi_trace_rms(l, "79072704"), vii_a_rms(l));
+        println!("first-order β_μ = {b}: 79072704 {t:.4}, VII-A {a:.4}");
+        assert_eq!(t > 0.06, trace_above, "{b}: {t}");
+        assert_eq!(a <= 0.0138, vii_a_within, "{b}: {a}");
+    }
 }

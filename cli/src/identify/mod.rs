@@ -34,7 +34,8 @@
 //! `film_thickness` or `viscosity,pressure_viscosity`, `fluid_conductivity`
 //! and `mu_temperature_coefficient`) unless they are fitted. The thermal
 //! parameters `mu_temperature_coefficient`, `m_temperature_coefficient` (one
-//! value for all rows, 1/K) and `film_factor` (a factor on every row's film
+//! value for all rows, 1/K), `mu_rise_scale` (T* of the second-order term of
+//! ln μ in the rise, K) and `film_factor` (a factor on every row's film
 //! thickness, i.e. on the film's thermal resistance h/(8k_f)) are fitted only
 //! with `--thermal`.
 //!
@@ -93,7 +94,8 @@ pub struct IdentifyArgs {
     pub input: String,
     /// Parameters to fit, comma separated: m, mu, mu_spin, m_factor,
     /// mu_factor, slip_offset, side_slip_offset; with --thermal also
-    /// mu_temperature_coefficient, m_temperature_coefficient, film_factor.
+    /// mu_temperature_coefficient, m_temperature_coefficient, mu_rise_scale,
+    /// film_factor.
     #[arg(long, value_delimiter = ',', required = true)]
     pub fit: Vec<String>,
     /// Initial values, comma separated `name=value` (default: from the
@@ -272,6 +274,7 @@ pub fn run(args: IdentifyArgs) -> Result<(), CliError> {
             options,
             mu_temperature_coefficient: None,
             m_temperature_coefficient: None,
+            mu_rise_scale: None,
             film_factor: 1.0,
         },
         index,

@@ -25,6 +25,9 @@ pub struct Trial {
     pub mu_temperature_coefficient: Option<f64>,
     /// β_m for all rows, 1/K (thermal; replaces the row's value).
     pub m_temperature_coefficient: Option<f64>,
+    /// T* of the second-order term of ln μ for all rows, K (thermal;
+    /// replaces the row's value).
+    pub mu_rise_scale: Option<f64>,
     /// Factor on every row's film thickness (thermal).
     pub film_factor: f64,
 }
@@ -163,6 +166,17 @@ pub const PARAMETERS: &[ParameterSpec] = &[
         thermal: true,
         initial: Initial::Value(0.0),
         apply: |t, v| t.m_temperature_coefficient = Some(v),
+    },
+    ParameterSpec {
+        name: "mu_rise_scale",
+        description: "temperature scale T* of the second-order term of ln μ in the film's rise (K): μ(ΔT) = μ e^(−(ΔT² − ΔT_peak²)/T*²), one value for all rows",
+        scale: 50.0,
+        lower: 1.0,
+        upper: 1e5,
+        excludes: &[],
+        thermal: true,
+        initial: Initial::Value(500.0),
+        apply: |t, v| t.mu_rise_scale = Some(v),
     },
     ParameterSpec {
         name: "film_factor",

@@ -84,6 +84,9 @@ impl Point {
         if let Some(b) = trial.m_temperature_coefficient {
             th.slope_coefficient = Some(b);
         }
+        if let Some(t) = trial.mu_rise_scale {
+            th.mu_rise_scale = Some(t);
+        }
         if trial.film_factor != 1.0 {
             th.film = Film::Thickness(self.film_thickness(&th)? * trial.film_factor);
         }

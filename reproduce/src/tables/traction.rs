@@ -22,7 +22,7 @@ fn vi_figure(trace: &str) -> (&'static str, &'static str) {
         ),
         "79072601" => (
             "fig-4-4",
-            "Figure 4-4: Santotrac 50, 20 m/s, 1.22 GPa, 32.5 °C, k = 1 as printed (run on the k = 5 discs: the thermal line), 15° spin",
+            "Figure 4-4: Santotrac 50, 20 m/s, 1.22 GPa, 32.5 °C, k = 1 printed (k = 5 discs), 15° spin",
         ),
         "79100403" => (
             "fig-4-6",
