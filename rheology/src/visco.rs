@@ -52,7 +52,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 const RATE_MAX: f64 = 1e100;
 
 /// Step error allowed per strip step, as a fraction of the requested tol.
-pub(crate) const STRIP_TOL: f64 = 1.0;
+pub(crate) const STRIP_TOL: f64 = 2.0;
 
 /// The viscous law: Deborah number D and reference stress Z0 (`inf`: Maxwell).
 #[derive(Debug, Clone, Copy)]
@@ -187,30 +187,7 @@ impl Pt {
     /// series (error < 1e-16), then the rotation.
     #[inline]
     fn advance(&self, d: f64) -> Self {
-        let d2 = d * d;
-        let sd = d
-            * (1.0
-                - d2 / 6.0
-                    * (1.0
-                        - d2 / 20.0
-                            * (1.0
-                                - d2 / 42.0
-                                    * (1.0
-                                        - d2 / 72.0
-                                            * (1.0
-                                                - d2 / 110.0
-                                                    * (1.0 - d2 / 156.0 * (1.0 - d2 / 210.0)))))));
-        let cd = 1.0
-            - d2 / 2.0
-                * (1.0
-                    - d2 / 12.0
-                        * (1.0
-                            - d2 / 30.0
-                                * (1.0
-                                    - d2 / 56.0
-                                        * (1.0
-                                            - d2 / 90.0
-                                                * (1.0 - d2 / 132.0 * (1.0 - d2 / 182.0))))));
+        let (sd, cd) = sincos_small(d);
         Pt {
             s: self.s + d,
             sn: self.sn * cd + self.cs * sd,
@@ -219,20 +196,60 @@ impl Pt {
     }
 }
 
+/// (sin d, cos d) by the Taylor series for |d| ≤ 1 (error < 1e-16), by
+/// libm beyond.
+#[inline]
+fn sincos_small(d: f64) -> (f64, f64) {
+    if d.abs() > 1.0 {
+        return d.sin_cos();
+    }
+    const S: [f64; 7] = [
+        1.0 / 6.0,
+        1.0 / 20.0,
+        1.0 / 42.0,
+        1.0 / 72.0,
+        1.0 / 110.0,
+        1.0 / 156.0,
+        1.0 / 210.0,
+    ];
+    const C: [f64; 7] = [
+        1.0 / 2.0,
+        1.0 / 12.0,
+        1.0 / 30.0,
+        1.0 / 56.0,
+        1.0 / 90.0,
+        1.0 / 132.0,
+        1.0 / 182.0,
+    ];
+    let d2 = d * d;
+    let mut sv = 1.0;
+    let mut cv = 1.0;
+    for i in (0..7).rev() {
+        sv = 1.0 - d2 * S[i] * sv;
+        cv = 1.0 - d2 * C[i] * cv;
+    }
+    (d * sv, cv)
+}
+
 /// A segment type: the interior (N = 2, u = Z) or the cap (N = 1, u = θ).
 trait Seg<const N: usize> {
     fn eval(&self, p: Pt, u: &[f64; N]) -> Eval<N>;
     fn eval_jac(&self, p: Pt, u: &[f64; N]) -> (Eval<N>, Jac<N>);
-    /// Solve (I/(γh) − J)·x = r.
-    fn solve(&self, gi: f64, j: &[[f64; N]; N], r: &[f64; N]) -> [f64; N];
+    /// The inverse of W = I/(γh) − J (gi = 1/(γh)).
+    fn inverse(&self, gi: f64, j: &[[f64; N]; N]) -> [[f64; N]; N];
     /// Weight of a state error in stress units.
     fn weight(&self) -> f64;
 }
 
 /// Interior of the cap: state Z.
 struct Interior<'a>(&'a VStrip);
-/// On the cap: state θ, Z = L·(cos θ, sin θ).
-struct Cap<'a>(&'a VStrip);
+/// On the cap: state θ, Z = L·(cos θ, sin θ); n(θ) is evaluated by
+/// rotating n(θ0) of the step's start by θ − θ0.
+struct Cap<'a> {
+    st: &'a VStrip,
+    th0: f64,
+    n0: (f64, f64),
+}
 
 impl Seg<2> for Interior<'_> {
     #[inline]
@@ -288,10 +305,10 @@ impl Seg<2> for Interior<'_> {
     }
 
     #[inline]
-    fn solve(&self, gi: f64, j: &[[f64; 2]; 2], r: &[f64; 2]) -> [f64; 2] {
+    fn inverse(&self, gi: f64, j: &[[f64; 2]; 2]) -> [[f64; 2]; 2] {
         let (a, b, c, d) = (gi - j[0][0], -j[0][1], -j[1][0], gi - j[1][1]);
-        let det = a * d - b * c;
-        [(d * r[0] - b * r[1]) / det, (a * r[1] - c * r[0]) / det]
+        let id = 1.0 / (a * d - b * c);
+        [[d * id, -b * id], [-c * id, a * id]]
     }
 
     fn weight(&self) -> f64 {
@@ -305,11 +322,28 @@ impl Seg<2> for Interior<'_> {
 /// vanish; effect below 1e-5).
 const SN_MIN: f64 = 0.02;
 
-impl Cap<'_> {
+impl<'a> Cap<'a> {
+    fn new(st: &'a VStrip, th0: f64) -> Self {
+        let (s0, c0) = th0.sin_cos();
+        Cap {
+            st,
+            th0,
+            n0: (c0, s0),
+        }
+    }
+
+    /// (cos θ, sin θ).
+    #[inline]
+    fn n(&self, th: f64) -> (f64, f64) {
+        let (sd, cd) = sincos_small(th - self.th0);
+        let (c0, s0) = self.n0;
+        (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
+    }
+
     /// dθ/dσ = (2/3)·(t·e − (n·e − L′)·(t·G·n)/(n·G·n)) with n = (nx, ny).
     #[inline]
     fn rate(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
-        let st = self.0;
+        let st = self.st;
         let x = -st.c * cs;
         let (ex, ey) = (st.a, st.b1 + st.q2 * x);
         let te = ey * nx - ex * ny;
@@ -327,9 +361,9 @@ impl Cap<'_> {
     /// λ̃ ≥ 0.
     #[inline]
     fn unload(&self, p: Pt, th: f64) -> f64 {
-        let st = self.0;
+        let st = self.st;
         let x = -st.c * p.cs;
-        let (ny, nx) = th.sin_cos();
+        let (nx, ny) = self.n(th);
         let ne = st.a * nx + (st.b1 + st.q2 * x) * ny;
         let l = 1.5 * st.c * p.sn.max(0.0);
         let ngn = nx * nx + st.gy * ny * ny;
@@ -340,9 +374,9 @@ impl Cap<'_> {
 impl Seg<1> for Cap<'_> {
     #[inline]
     fn eval(&self, p: Pt, u: &[f64; 1]) -> Eval<1> {
-        let st = self.0;
+        let st = self.st;
         let x = -st.c * p.cs;
-        let (ny, nx) = u[0].sin_cos();
+        let (nx, ny) = self.n(u[0]);
         let w = 1.5 * st.c * st.c * p.sn * p.sn;
         Eval {
             f: [self.rate(p.sn, p.cs, nx, ny)],
@@ -352,12 +386,12 @@ impl Seg<1> for Cap<'_> {
 
     #[inline]
     fn eval_jac(&self, p: Pt, u: &[f64; 1]) -> (Eval<1>, Jac<1>) {
-        let st = self.0;
+        let st = self.st;
         let (sn, cs) = (p.sn, p.cs);
         let x = -st.c * cs;
         let xp = st.c * sn;
         let th = u[0];
-        let (ny, nx) = th.sin_cos();
+        let (nx, ny) = self.n(th);
         let f = self.rate(sn, cs, nx, ny);
         let (j, t) = if st.gy == 1.0 {
             let ne = st.a * nx + (st.b1 + st.q2 * x) * ny;
@@ -365,7 +399,7 @@ impl Seg<1> for Cap<'_> {
         } else {
             // Forward differences (the step error they add is O(δ·h)).
             let d = 1e-7;
-            let (ny2, nx2) = (th + d).sin_cos();
+            let (nx2, ny2) = self.n(th + d);
             let jj = (self.rate(sn, cs, nx2, ny2) - f) / d;
             let p2 = p.advance(d);
             let tt = (self.rate(p2.sn, p2.cs, nx, ny) - f) / d;
@@ -387,12 +421,12 @@ impl Seg<1> for Cap<'_> {
     }
 
     #[inline]
-    fn solve(&self, gi: f64, j: &[[f64; 1]; 1], r: &[f64; 1]) -> [f64; 1] {
-        [r[0] / (gi - j[0][0])]
+    fn inverse(&self, gi: f64, j: &[[f64; 1]; 1]) -> [[f64; 1]; 1] {
+        [[1.0 / (gi - j[0][0])]]
     }
 
     fn weight(&self) -> f64 {
-        1.5 * self.0.c
+        1.5 * self.st.c
     }
 }
 
@@ -427,6 +461,8 @@ const ALPHA3: f64 = 3.0 / 5.0;
 /// One Rosenbrock step: new state, quadrature increments, error estimate
 /// (max norm of the state error × weight and the quadrature errors).
 struct Step<const N: usize> {
+    /// σ + h.
+    p1: Pt,
     u: [f64; N],
     dq: [f64; 3],
     err: f64,
@@ -446,17 +482,28 @@ fn ros_step<const N: usize, S: Seg<N>>(
     let gi = 1.0 / (GAM * h);
     let gh = GAM * h;
     let ih = 1.0 / h;
+    let wi = seg.inverse(gi, &jac.j);
+    let mut th = [0.0; N];
+    for k in 0..N {
+        th[k] = h * jac.t[k];
+    }
+    let thq = [h * jac.tq[0], h * jac.tq[1], h * jac.tq[2]];
     // Stage: r = f + g·h·f_σ + Σ c_j·U_j/h; U_u = W⁻¹·r_u,
     // U_q = γh·(r_q + Gq·U_u).
     let stage = |ev: &Eval<N>, g: f64, cu: [f64; N], cq: [f64; 3]| -> ([f64; N], [f64; 3]) {
         let mut r = [0.0; N];
         for k in 0..N {
-            r[k] = ev.f[k] + g * h * jac.t[k] + ih * cu[k];
+            r[k] = ev.f[k] + g * th[k] + ih * cu[k];
         }
-        let uu = seg.solve(gi, &jac.j, &r);
+        let mut uu = [0.0; N];
+        for k in 0..N {
+            for l in 0..N {
+                uu[k] += wi[k][l] * r[l];
+            }
+        }
         let mut uq = [0.0; 3];
         for i in 0..3 {
-            let mut v = ev.fq[i] + g * h * jac.tq[i] + ih * cq[i];
+            let mut v = ev.fq[i] + g * thq[i] + ih * cq[i];
             for k in 0..N {
                 v += jac.gq[i][k] * uu[k];
             }
@@ -469,7 +516,8 @@ fn ros_step<const N: usize, S: Seg<N>>(
     for k in 0..N {
         y[k] += A21 * u1[k];
     }
-    let e2 = seg.eval(p.advance(ALPHA2 * h), &y);
+    let p1 = p.advance(ALPHA2 * h);
+    let e2 = seg.eval(p1, &y);
     let mut cu = [0.0; N];
     for k in 0..N {
         cu[k] = C21 * u1[k];
@@ -514,7 +562,7 @@ fn ros_step<const N: usize, S: Seg<N>>(
     if !sum.is_finite() || err.is_nan() {
         err = f64::INFINITY;
     }
-    Step { u: un, dq, err }
+    Step { p1, u: un, dq, err }
 }
 
 /// Cubic Hermite interpolant on [0, 1] (step h) of y with slopes m0, m1 (per σ).
@@ -609,7 +657,7 @@ const H_MAX: f64 = 0.8;
 
 /// The point at σ + h, exactly (0, −1) at the outlet.
 #[inline]
-fn end_point(p: Pt, h: f64, last: bool) -> Pt {
+fn end_point(p1: Pt, last: bool) -> Pt {
     if last {
         Pt {
             s: PI,
@@ -617,7 +665,7 @@ fn end_point(p: Pt, h: f64, last: bool) -> Pt {
             cs: -1.0,
         }
     } else {
-        p.advance(h)
+        p1
     }
 }
 
@@ -629,7 +677,6 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
         return q;
     }
     let inter = Interior(st);
-    let cap = Cap(st);
     // At the inlet Z ≈ e·c·σ²/2 against L ≈ (3/2)·c·σ: the first step keeps
     // |Z|/L ≤ 1/2.
     let ein = st.a.hypot(st.b1 - st.q2 * st.c);
@@ -670,7 +717,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                     h *= factor(stp.err, atol).min(0.9);
                 };
                 let last = last && h1 == hmax;
-                let p1 = end_point(p, h1, last);
+                let p1 = end_point(stp.p1, last);
                 let l1 = lcap(p1.sn);
                 let r1 = (stp.u[0] * stp.u[0] + stp.u[1] * stp.u[1]).sqrt();
                 if r1 > l1 {
@@ -711,6 +758,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
             }
             Mode::Cap(th) => {
                 let u = [th];
+                let cap = Cap::new(st, th);
                 let (ev0, jac) = cap.eval_jac(p, &u);
                 let (stp, h1) = loop {
                     steps += 1;
@@ -721,7 +769,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                     h *= factor(stp.err, atol).min(0.9);
                 };
                 let last = last && h1 == hmax;
-                let p1 = end_point(p, h1, last);
+                let p1 = end_point(stp.p1, last);
                 let lam1 = if switches < MAX_SWITCH && !last {
                     cap.unload(p1, stp.u[0])
                 } else {
@@ -749,7 +797,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                         th
                     };
                     let l = lcap(p.sn);
-                    let (sy, cx) = ths.sin_cos();
+                    let (cx, sy) = cap.n(ths);
                     mode = Mode::Interior([l * cx, l * sy]);
                     switches += 1;
                 } else {
