@@ -485,7 +485,7 @@ pub(crate) fn viscoelastic(
     if deborah.is_infinite() {
         return evaluate(inp, Model::ElasticPlastic, acc);
     }
-    let law = visco::Law { z0, d: deborah };
+    let law = visco::Law::new(z0, deborah);
     // Huge J with a bounded viscous rate: the stress is on the cap
     // everywhere (the elastic rate exceeds the largest viscous rate
     // ψ(3/2) by more than 1e9), i.e. the rigid/plastic solution.

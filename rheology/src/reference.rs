@@ -50,7 +50,7 @@ pub fn viscoelastic(
     inp.validate()?;
     crate::check_viscoelastic(deborah, z0)?;
     let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
-    let law = crate::visco::Law { z0, d: deborah };
+    let law = crate::visco::Law::new(z0, deborah);
     let (j4, j5, j6) = crate::visco::reference::solve(&sc, law, res, nsteps.clamp(1, 1_000_000));
     Ok(finish(inp, j4, j5, j6))
 }

@@ -59,19 +59,29 @@ pub(crate) const STRIP_TOL: f64 = 2.0;
 pub(crate) struct Law {
     pub z0: f64,
     pub d: f64,
+    /// 1/D and 1/Z0.
+    id: f64,
+    iz0: f64,
 }
 
 impl Law {
+    pub(crate) fn new(z0: f64, d: f64) -> Self {
+        Law {
+            z0,
+            d,
+            id: 1.0 / d,
+            iz0: 1.0 / z0,
+        }
+    }
+
     /// (μ, ψ′) at |Z| = r: μ = ψ(r)/r = Z0·sinh(r/Z0)/(D·r) and
     /// ψ′ = cosh(r/Z0)/D (both 1/D at r = 0 and for Z0 = ∞).
     #[inline]
     fn rates(&self, r: f64) -> (f64, f64) {
-        let id = 1.0 / self.d;
-        if self.z0.is_infinite() {
-            return (id, id);
-        }
-        let x = r / self.z0;
+        let id = self.id;
+        let x = r * self.iz0;
         if x < 0.01 {
+            // Also Z0 = ∞ (x = 0) and r = 0.
             let x2 = x * x;
             return (
                 id * (1.0 + x2 / 6.0 * (1.0 + x2 / 20.0)),
@@ -855,8 +865,9 @@ const BLEND: (f64, f64) = (1.0, 2.0);
 const MAX_DEPTH: u32 = 12;
 /// First graded panel width from the spin pole's strip, in φ: POLE_GRADING/|J3|.
 const POLE_GRADING: f64 = 8.0;
-/// Narrowest graded panel (|J3| > 800): the viscous relaxation smooths the
-/// flow pattern near the pole; caps the initial strips at huge spin.
+/// Narrowest graded panel (reached for |J3| > 800): bounds the number of
+/// initial strips at huge spin (finer structure near the pole is left to the
+/// adaptive refinement).
 const W0_MIN: f64 = 0.01;
 /// Largest number of initial panel edges.
 const MAX_BREAKS: usize = 64;

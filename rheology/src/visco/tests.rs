@@ -12,10 +12,7 @@ fn strip(c: f64, a: f64, b1: f64, d: f64) -> VStrip {
         b1,
         q2: 0.0,
         gy: 1.0,
-        law: Law {
-            z0: f64::INFINITY,
-            d,
-        },
+        law: Law::new(f64::INFINITY, d),
     }
 }
 
@@ -67,10 +64,7 @@ fn maxwell_contact_at_zero_spin_is_exact() {
     ] {
         let inp = Inputs::new(k, j1, j2, 0.0).unwrap();
         let p = Params::new(&inp);
-        let law = Law {
-            z0: f64::INFINITY,
-            d,
-        };
+        let law = Law::new(f64::INFINITY, d);
         let r = reference::contact_exact(&p, 64, |y| reference::maxwell_strip(&p.strip(y, law)));
         let r2 = reference::contact_exact(&p, 128, |y| reference::maxwell_strip(&p.strip(y, law)));
         assert!(max_dev(r, r2) < 1e-10, "{r:?} {r2:?}");
@@ -129,7 +123,7 @@ fn matches_the_former_scheme_refined() {
             .unwrap();
         let r = former(&inp, d, z0, panels, 2000);
         let p = Params::new(&inp);
-        let law = Law { z0, d };
+        let law = Law::new(z0, d);
         for tol in [1e-3, 1e-4] {
             let v = solve(&p, law, tol);
             let e = max_dev(v, r);
@@ -161,5 +155,39 @@ fn large_inputs_terminate_finite() {
             "{o:?}"
         );
         assert!(o.j4.hypot(o.j5) <= 1.0 + 1e-6, "{o:?}");
+    }
+}
+
+#[test]
+#[ignore]
+fn reference_self_accuracy() {
+    // The reference of `matches_the_former_scheme_refined` against itself
+    // at twice the panels and steps (offline measurement for the comments).
+    let cases: [Case; 10] = [
+        (1.0, 1.5, 0.3, 2.0, 1.0, 1.0, 1.0, 16),
+        (1.0, 1.0, 0.0, 0.0, 0.1, 0.1, 1.0, 16),
+        (0.5, 2.0, -1.0, 10.0, 0.01, 0.1, 1.0, 16),
+        (2.0, 3.0, 0.5, 1.0, 100.0, 0.3, 2.0, 16),
+        (0.2, 0.5, 0.2, 0.8, 0.3, f64::INFINITY, 1.0, 16),
+        (5.0, 1.0, -0.5, 3.0, 3.0, 2.0, 0.5, 16),
+        (1.0, 0.4, 0.1, -1.5, 0.05, 1.0, 1.0, 16),
+        (3.0, -2.0, 1.0, 4.0, 1.0, 0.5, 3.0, 16),
+        (1.0, 4.0, 2.0, 0.0, 1.0, 1.0, 2.0, 16),
+        (5.0, 0.0, 3.368, 25.816, 1.0, 1.0, 1.0, 64),
+    ];
+    for &(k, j1, j2, j3, d, z0, gy, panels) in &cases {
+        let inp = Inputs::new(k, j1, j2, j3)
+            .unwrap()
+            .with_stiffness_ratio(gy)
+            .unwrap();
+        let r = former(&inp, d, z0, panels, 2000);
+        let r2 = former(&inp, d, z0, 2 * panels, 4000);
+        let v = solve(&Params::new(&inp), Law::new(z0, d), 1e-8);
+        println!(
+            "k {k} J ({j1}, {j2}, {j3}) D {d} Z0 {z0} gy {gy}: ref vs 2x {:.2e}, ref vs new(1e-8) {:.2e}, 2x vs new {:.2e}",
+            max_dev(r, r2),
+            max_dev(r, v),
+            max_dev(r2, v)
+        );
     }
 }
