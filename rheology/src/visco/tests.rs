@@ -102,15 +102,39 @@ fn former(inp: &Inputs, d: f64, z0: f64, panels: usize, n: usize) -> (f64, f64, 
 #[test]
 fn matches_the_former_scheme_refined() {
     // Spread: D 0.01–100, Z0 0.1–∞, k 0.2–5, with and without spin and side
-    // slip, gy = 1 and ≠ 1, high spin. The reference (16 panels × 8 points,
-    // 64 at high spin; 2000/4000 uniform steps, Richardson) is itself
+    // slip, gy = 1 and ≠ 1, high spin, and four cases of a random scan that
+    // an earlier panel rule or step tolerance got wrong (up to 2.2·tol).
+    // The reference (16 panels × 8 points, 32 for k ≈ 4.5–8.6, 64 at high
+    // spin; 2000/4000 uniform steps, Richardson) is itself
     // accurate to ≤ 1e-6: against twice the panels and steps it moves by
-    // ≤ 7.6e-7 on these cases, and that refined reference agrees with this
-    // solver at tol = 1e-8 to ≤ 5.2e-7 (measured once, offline). Asserted:
+    // ≤ 7.6e-7 on the first ten cases, and that refined reference agrees
+    // with this solver at tol = 1e-8 to ≤ 5.2e-7 (measured once, offline). Asserted:
     // |new − reference| ≤ tol at tol = 1e-3 and 1e-4 (the measured worst
     // error/tol is in the crate README, section Viscoelastic model).
-    let cases: [Case; 10] = [
+    let cases: [Case; 14] = [
         (1.0, 1.5, 0.3, 2.0, 1.0, 1.0, 1.0, 16),
+        (4.5114, 0.1579, -1.8817, -5.6749, 0.1668, 2.503, 1.0, 32),
+        (
+            8.5173,
+            -2.2895,
+            -1.7589,
+            -5.0226,
+            0.0794,
+            f64::INFINITY,
+            1.0,
+            32,
+        ),
+        (8.6045, 0.2631, -2.8225, -5.6749, 0.1668, 2.503, 1.0, 32),
+        (
+            0.2753,
+            1.7451,
+            -0.3493,
+            -2.2796,
+            10.44,
+            f64::INFINITY,
+            2.3467,
+            16,
+        ),
         (1.0, 1.0, 0.0, 0.0, 0.1, 0.1, 1.0, 16),
         (0.5, 2.0, -1.0, 10.0, 0.01, 0.1, 1.0, 16),
         (2.0, 3.0, 0.5, 1.0, 100.0, 0.3, 2.0, 16),
