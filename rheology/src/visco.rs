@@ -45,7 +45,8 @@
 //! kept; refinement blended in between, so a panel's decision adds no jump,
 //! though the step sequence along the strips still changes discretely with
 //! the inputs), starting from panels graded towards the spin pole's strip
-//! Y_p = J1/(√k·J3), where the flow pattern changes fastest.
+//! Y_p = J1/(√k·J3), where the flow pattern changes fastest, and no wider
+//! than 0.8 rad (a wider panel can pass the test by chance).
 //!
 //! max|J| > [`crate::J_RIGID`] with the largest viscous rate ψ(3/2) below
 //! 1e-9·max|J| returns the rigid/plastic solution (the stress is on the cap
