@@ -623,8 +623,8 @@ fn event(g: impl Fn(f64) -> f64, g1: f64) -> f64 {
         return 0.0;
     }
     let (mut b, mut fb) = (1.0, g1);
-    // If a point above a is already positive, narrow first (keeps the
-    // first sign change after a).
+    // Illinois: halve the retained end's value when the same end is kept
+    // twice in a row.
     let mut side = 0;
     for _ in 0..60 {
         let m = (a * fb - b * fa) / (fb - fa);
@@ -658,7 +658,8 @@ fn event(g: impl Fn(f64) -> f64, g1: f64) -> f64 {
 /// stays on the cap).
 const MAX_SWITCH: usize = 24;
 /// Steps per strip after which steps are accepted regardless of the error
-/// estimate (never reached in the tests; guarantees termination).
+/// estimate: guarantees termination at extreme inputs (where the tolerance
+/// is then not held).
 const MAX_STEPS: usize = 1000;
 
 #[derive(Clone, Copy)]
