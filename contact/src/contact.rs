@@ -403,7 +403,12 @@ impl TractionContact {
                     };
                     let (s, p) = at_accuracy(m, mu, mu, acc)?;
                     let rise = model.rise(s.loss);
-                    let slope = model.log_slope(self.geometry.k, &s.j, dt, rise);
+                    // The solver reads the slope of its first evaluation only.
+                    let slope = if count == 1 {
+                        model.log_slope(self.geometry.k, &s.j, dt, rise)
+                    } else {
+                        0.0
+                    };
                     last = Some((dt, acc == self.options.accuracy, s, p));
                     Ok((rise, slope))
                 })?;

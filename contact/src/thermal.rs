@@ -291,7 +291,8 @@ pub fn surface_resistance(
     heat_capacity: f64,
 ) -> f64 {
     let chi = conductivity / heat_capacity;
-    let v = velocity[0].hypot(velocity[1]);
+    // Speeds are bounded (the state's ranges): no overflow without hypot.
+    let v = (velocity[0] * velocity[0] + velocity[1] * velocity[1]).sqrt();
     // Half-chord of the ellipse along the direction of motion.
     let l = if v > 0.0 {
         let (c, s) = (velocity[0] / v, velocity[1] / v);
@@ -674,12 +675,16 @@ impl ContactThermal {
 
     /// The slope of ln(loss) for the solver's first step: the local slope at
     /// `dt` (exact for the first-order law), or with a second-order term the
-    /// chord slope (ln x₁ − ln rise)/(x₁ − dt) to the root x₁ of
-    /// x = rise·e^{log_loss_ratio(x)}, found by Newton's method safeguarded
-    /// in the bracket between `dt` and `rise`; the local slope when that
-    /// root is not bracketed or `rise` lies within 1 % of `dt`.
+    /// chord slope (ln x₁ − ln rise)/(x₁ − dt) = L(x₁)/(x₁ − dt) to the root
+    /// x₁ of h(x) = x − rise·e^{L(x)}, L = [`Self::log_loss_ratio`] (so that
+    /// the solver's exponential step through (dt, rise) lands on x₁), found by
+    /// Newton's method safeguarded in the bracket between `dt` and `rise` (h is
+    /// increasing there when heating lowers the loss); the local slope when
+    /// that root is not bracketed or `rise` lies within 1 % of `dt`.
     fn chord_slope(&self, e: f64, dt: f64, rise: f64) -> f64 {
-        let local = (2.0 - e) * (-self.beta_mu - 2.0 * dt * self.inv_scale_sq) - e * self.beta_m;
+        let dl =
+            |x: f64| (2.0 - e) * (-self.beta_mu - 2.0 * x * self.inv_scale_sq) - e * self.beta_m;
+        let local = dl(dt);
         // Near the fixed point (within 1 %) the local slope serves as well.
         if self.inv_scale_sq == 0.0
             || !(rise > 0.0 && rise.is_finite())
@@ -687,48 +692,38 @@ impl ContactThermal {
         {
             return local;
         }
-        // g(x) = ln x − ln rise − log_loss_ratio(x), increasing when heating
-        // lowers the loss; its root lies between dt and rise, where
-        // g(dt) = ln(dt/rise) and g(rise) = −log_loss_ratio(rise).
-        let ln_rise = rise.ln();
-        let x_dt = dt.max(1e-9 * rise);
-        let (g_dt, g_rise) = (x_dt.ln() - ln_rise, -self.log_loss_ratio(e, dt, rise));
-        let (mut lo, mut hi) = if dt < rise {
-            (x_dt, rise)
-        } else {
-            (rise, x_dt)
-        };
-        if !(g_dt.min(g_rise) <= 0.0 && g_dt.max(g_rise) >= 0.0) {
+        // h(dt) = dt − rise (L(dt) = 0), h(rise) = rise·(1 − e^{L(rise)}).
+        let h_dt = dt - rise;
+        let h_rise = rise * (1.0 - self.log_loss_ratio(e, dt, rise).exp());
+        if !(h_dt.min(h_rise) <= 0.0 && h_dt.max(h_rise) >= 0.0) {
             return local;
         }
-        let dg = |x: f64| {
-            1.0 / x + (2.0 - e) * (self.beta_mu + 2.0 * x * self.inv_scale_sq) + e * self.beta_m
-        };
-        // Newton from rise, safeguarded by bisection of the bracket.
-        let (mut x, mut gx) = (rise, g_rise);
-        for _ in 0..30 {
-            // g is ln x to within 1e-9: x to 1e-9 relative.
-            if gx.abs() <= 1e-9 {
+        let (mut lo, mut hi) = if dt < rise { (dt, rise) } else { (rise, dt) };
+        // Newton from rise, safeguarded by bisection of the bracket; x to
+        // 1e-7 relative (the solver's tolerance is 1e-3 of the rise).
+        let mut x = rise;
+        for _ in 0..40 {
+            let ex = rise * self.log_loss_ratio(e, dt, x).exp();
+            let h = x - ex;
+            if h.abs() <= 1e-7 * x {
                 break;
             }
-            if gx < 0.0 {
+            if h < 0.0 {
                 lo = x;
             } else {
                 hi = x;
             }
-            let d = dg(x);
-            let mut next = x - gx / d;
+            let d = 1.0 - ex * dl(x);
+            let mut next = x - h / d;
             if !(d > 0.0 && next > lo && next < hi) {
                 next = 0.5 * (lo + hi);
             }
             x = next;
-            gx = x.ln() - ln_rise - self.log_loss_ratio(e, dt, x);
         }
         if (x - dt).abs() <= 1e-12 * x.max(1.0) {
             return local;
         }
-        // ln x − ln rise = g(x) + log_loss_ratio(x).
-        (gx + self.log_loss_ratio(e, dt, x)) / (x - dt)
+        self.log_loss_ratio(e, dt, x) / (x - dt)
     }
 
     /// A starting guess of the fixed point: the reference peak's rise, K.
