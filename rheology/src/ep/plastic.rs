@@ -245,6 +245,8 @@ impl Strip {
     /// or equal sub-steps where κ·h exceeds the RK4 stability margin or the
     /// slip direction turns by more than `a_h` within the step (beyond
     /// MAX_SUB stability sub-steps: the quasi-steady direction).
+    /// `rates`: the step's (κ·h, |α'|·h) bounds if the caller has them.
+    #[allow(clippy::too_many_arguments)]
     fn advance<const ISO: bool>(
         &self,
         p: &PState,
@@ -253,10 +255,14 @@ impl Strip {
         s2: f64,
         a_h: f64,
         cache: &mut (f64, f64, f64),
+        rates: Option<(f64, f64)>,
     ) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
-        let (kh, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1, h);
+        let (kh, ah) = match rates {
+            Some(r) => r,
+            None => self.rates::<ISO>(p.sn, p.cs, s1, c1, h),
+        };
         if kh.is_nan() || (kh <= KAPPA_H && ah <= a_h) {
             return self.rk4::<ISO>(p, h, c2, s2);
         }
@@ -368,16 +374,20 @@ impl Strip {
         };
         let mut s_cur = s0;
         let mut i = 0;
-        let h_first =
-            GRADED_KAPPA_H / ((2.0 / 3.0) * self.a.hypot(self.vy(self.c * sn))).max(RATE_FLOOR);
+        // First step of the graded start (stiff segments only).
+        let h_first = if nonstiff {
+            f64::INFINITY
+        } else {
+            GRADED_KAPPA_H / ((2.0 / 3.0) * self.a.hypot(self.vy(self.c * sn))).max(RATE_FLOOR)
+        };
         loop {
             // Non-stiff segments: nsteps equal steps. Otherwise steps of at
             // most h, shortened where the slip direction turns by more than
             // a_h (near the strip's crossing of the spin pole's line vy = 0),
             // so that unloading is checked at that resolution too.
-            let (h, c2, s2, last) = if nonstiff {
+            let (h, c2, s2, last, step_rates) = if nonstiff {
                 i += 1;
-                (h, c2, s2, i == nsteps)
+                (h, c2, s2, i == nsteps, None)
             } else {
                 let rem = FRAC_PI_2 - s_cur;
                 i += 1;
@@ -393,7 +403,8 @@ impl Strip {
                     let (sh, ch) = if hv == h { sc_h } else { sin_cos_small(hv) };
                     (p.sn * ch + p.cs * sh, p.cs * ch - p.sn * sh)
                 };
-                let (_, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1.max(0.0), hv);
+                let (kh, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1.max(0.0), hv);
+                let h_full = hv;
                 if ah > a_h && i <= MAX_STEPS {
                     hv *= (a_h / ah).max(1.0 / MAX_SUB_TURN);
                 }
@@ -403,18 +414,21 @@ impl Strip {
                 if i < GRADED_STEPS {
                     hv = hv.min(h_first * f64::from(1u32 << (i - 1).min(30)));
                 }
+                // The bounds just computed hold for the step unless it was
+                // shortened (`advance` then computes them for the new step).
+                let step_rates = (hv == h_full).then_some((kh, ah));
                 let (s2v, c2v) = if hv == h {
                     (s2, c2)
                 } else {
                     sin_cos_small(0.5 * hv)
                 };
-                (hv, c2v, s2v, hv >= rem)
+                (hv, c2v, s2v, hv >= rem, step_rates)
             };
             let mut q = if nonstiff {
                 self.rk4::<ISO>(&p, h, c2, s2)
             } else {
                 s_cur += h;
-                self.advance::<ISO>(&p, h, c2, s2, a_h, &mut cache)
+                self.advance::<ISO>(&p, h, c2, s2, a_h, &mut cache, step_rates)
             };
             if last {
                 q.sn = 1.0;
@@ -472,7 +486,7 @@ impl Strip {
                 0.5 * (tl + th)
             };
             let (st, ct) = sin_cos_small(0.5 * t);
-            let r = self.advance::<ISO>(p, t, ct, st, a_h, cache);
+            let r = self.advance::<ISO>(p, t, ct, st, a_h, cache, None);
             let gr = self.g(r.sn, r.cs, r.nx, r.ny);
             best = r;
             if gr.abs() < UNLOAD_G_TOL {
