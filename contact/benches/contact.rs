@@ -83,6 +83,14 @@ fn bench(c: &mut Criterion) {
     c.bench_function("thermal: evaluate, spin, tol 1e-4, regime", |b| {
         b.iter(|| hot.evaluate(black_box(&s)))
     });
+    // The same state without spin (closed forms).
+    let s0 = state(0.0);
+    c.bench_function("thermal: isothermal reference, zero spin, regime", |b| {
+        b.iter(|| iso.evaluate(black_box(&s0)))
+    });
+    c.bench_function("thermal: evaluate, zero spin, regime", |b| {
+        b.iter(|| hot.evaluate(black_box(&s0)))
+    });
     let no_regime = contact(Options {
         classify_regime: false,
         ..Options::default()

@@ -380,24 +380,32 @@ impl TractionContact {
                     let (fm, fmu) = model.factors(dt);
                     (inlet.m * fm, inlet.mu * fmu)
                 };
-                // The first two evaluations (far from the root) at a ten
-                // times coarser accuracy, the others at the contact's; the
-                // solver returns a temperature at which it has just evaluated
-                // the contact: that evaluation is kept when it was a full one.
-                let coarse = thermal::iteration_accuracy(self.options.accuracy);
+                // With spin, the first evaluation (far from the root) at a
+                // ten times coarser accuracy, the others at the contact's;
+                // without spin every one at the contact's (the closed forms
+                // cost the same at any accuracy). The solver returns a
+                // temperature at which it has just evaluated the contact:
+                // that evaluation is kept when it was a full one.
+                let coarse = if state.spin != 0.0 {
+                    thermal::iteration_accuracy(self.options.accuracy)
+                } else {
+                    self.options.accuracy
+                };
                 let mut last = None;
                 let mut count = 0;
-                let (dt, _) = thermal::solve_fixed_point(model.start(), |dt| {
+                let (dt, _) = thermal::solve_fixed_point_with_slope(model.start(), |dt| {
                     let (m, mu) = props(dt);
                     count += 1;
-                    let acc = if count <= 2 {
+                    let acc = if count <= 1 {
                         coarse
                     } else {
                         self.options.accuracy
                     };
                     let (s, p) = at_accuracy(m, mu, mu, acc)?;
+                    let rise = model.rise(s.loss);
+                    let slope = model.log_slope(self.geometry.k, &s.j);
                     last = Some((dt, acc == self.options.accuracy, s, p));
-                    Ok(model.rise(s.loss))
+                    Ok((rise, slope))
                 })?;
                 match last {
                     Some((t, true, s, p)) if t == dt => (s, p, dt),

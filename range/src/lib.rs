@@ -116,6 +116,7 @@ impl Range {
     }
 
     /// Whether `value` is valid.
+    #[inline]
     pub fn contains(&self, value: f64) -> bool {
         if value.is_nan() {
             return false;
@@ -140,6 +141,7 @@ impl Range {
 
     /// `value` if it is valid, otherwise an error naming `quantity`, the value and
     /// this range.
+    #[inline]
     pub fn check(&self, quantity: &'static str, value: f64) -> Result<f64, OutOfRange> {
         if self.contains(value) {
             Ok(value)
