@@ -232,10 +232,10 @@ fn initial_breaks(sc: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
 /// The initial panels are then symmetric about Y = 0 (the pole's strip) and
 /// the adaptive rule takes the same decisions on mirrored panels, so only
 /// Y ≥ 0 is integrated: J4 = 0, J5 and J6 twice the half's, half the cost.
-/// The result is the full integration's (bit for bit on the cases of
-/// rheology/tests/continuity.rs at J1 = 0, within the strip integrator's
-/// own sensitivity to tiny input changes next to it), so it stays
-/// continuous at J1 = 0.
+/// The result is the full integration's (bit for bit where compared, e.g.
+/// k = 5, J = (0, 3.37, 25.8); rheology/tests/continuity.rs compares J1 = 0
+/// with J1 = ±1e-15 within the strip integrator's own sensitivity to such
+/// changes), so it stays continuous at J1 = 0.
 pub(crate) fn solve_adaptive(
     sc: &Scaled,
     n: usize,
