@@ -27,8 +27,7 @@
 //!   crossing of vy = 0) and graded from κ·h = 1/2 after yield, where the
 //!   lag of n behind v̂ relaxes within ~1/κ;
 //! * elastic unloading where g = (v·n)·cos s + (3/2)·sin s turns negative
-//!   (v·n < dL/dX), located by regula falsi on the step's cubic Hermite
-//!   interpolant of n, then reached by one integration step.
+//!   (v·n < dL/dX), located by regula falsi inside the step.
 
 mod plastic;
 mod quadrature;

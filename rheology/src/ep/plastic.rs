@@ -52,7 +52,7 @@ pub(super) fn sin_cos_small(x: f64) -> (f64, f64) {
 /// behind the slip direction and its first correction are tiny). 8 instead
 /// of 16: on 157 wide-range cases (k 0.05–20, |J3| to 316) 24–34 % fewer
 /// RK4 steps at tol = 1e-2…1e-4 (up to 2.4× on single large-|J| cases),
-/// 11–15 % fewer instructions in total, results moved by ≤ 0.052·tol,
+/// 11–16 % fewer instructions in total, results moved by ≤ 0.052·tol,
 /// worst error/tol against the reference
 /// unchanged there and on 374 cases with |J| ≤ 26 (docs/decisions/0066);
 /// 4: another −30 %, but the worst error/tol at 1e-3 rose 0.32 → 0.35.
@@ -98,9 +98,8 @@ const QS_NEWTON_ITERATIONS: usize = 4;
 const QS_DIFF_STEP: f64 = 1e-6;
 const QS_NEWTON_TOL: f64 = 1e-12;
 const QS_MAX_CORRECTION: f64 = 0.5;
-/// Largest number of regula-falsi steps locating the start of unloading
-/// (on the interpolant: no integration per step).
-const UNLOAD_ITERATIONS: usize = 12;
+/// Largest number of regula-falsi steps locating the start of unloading.
+const UNLOAD_ITERATIONS: usize = 6;
 /// |g| below which the start of unloading counts as located.
 const UNLOAD_G_TOL: f64 = 1e-13;
 
@@ -448,7 +447,7 @@ impl Strip {
             if allow_unload && q.cs > OUTLET_CS {
                 let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
                 if g1 < 0.0 {
-                    let best = self.locate_unload::<ISO>(&p, &q, h, g1, a_h, &mut cache);
+                    let best = self.locate_unload::<ISO>(&p, h, g1, a_h, &mut cache);
                     *acc += best.acc;
                     let l = 1.5 * self.c * best.cs;
                     rec(Event::Plastic {
@@ -475,49 +474,31 @@ impl Strip {
     }
 
     /// The state where unloading begins inside the step of length `h` from
-    /// `p` to `q` (g ≥ 0 at its start, g = `g1` < 0 at its end): regula
-    /// falsi (Illinois) for the root of g along the cubic Hermite
-    /// interpolant of n over the step (from n and dn/ds at both ends), at
-    /// most [`UNLOAD_ITERATIONS`] steps or until |g| < [`UNLOAD_G_TOL`], then
-    /// one step of the integrator from `p` to that point. The interpolant's
-    /// O(h⁴) error moves the point by as much; the stress path changes only
-    /// at second order in that shift (at g = 0 the plastic multiplier
-    /// vanishes and the elastic continuation is tangent to the plastic one).
+    /// `p` (g ≥ 0 at its start, g = `g1` < 0 at its end): regula falsi
+    /// (Illinois) on the step length, at most [`UNLOAD_ITERATIONS`] steps or
+    /// until |g| < [`UNLOAD_G_TOL`].
     fn locate_unload<const ISO: bool>(
         &self,
         p: &PState,
-        q: &PState,
         h: f64,
         g1: f64,
         a_h: f64,
         cache: &mut (f64, f64, f64),
     ) -> PState {
         let g0 = self.g(p.sn, p.cs, p.nx, p.ny).max(0.0);
-        // dn/ds = θ'·(−ny, nx) at both ends, scaled by h for the basis.
-        let w0 = h * self.theta_rate(p.sn, p.cs, p.nx, p.ny);
-        let w1 = h * self.theta_rate(q.sn, q.cs, q.nx, q.ny);
-        let (d0x, d0y, d1x, d1y) = (-w0 * p.ny, w0 * p.nx, -w1 * q.ny, w1 * q.nx);
-        let g_at = |t: f64| {
-            let u = t / h;
-            let (u1, uu) = (1.0 - u, u * u);
-            let (h00, h10) = ((1.0 + 2.0 * u) * u1 * u1, u * u1 * u1);
-            let (h01, h11) = (uu * (3.0 - 2.0 * u), uu * (u - 1.0));
-            let nx = h00 * p.nx + h10 * d0x + h01 * q.nx + h11 * d1x;
-            let ny = h00 * p.ny + h10 * d0y + h01 * q.ny + h11 * d1y;
-            let (st, ct) = sin_cos_small(t);
-            let (sn, cs) = (p.sn * ct + p.cs * st, p.cs * ct - p.sn * st);
-            self.g(sn, cs.max(0.0), nx, ny)
-        };
         let (mut tl, mut gl, mut th, mut gh) = (0.0, g0, h, g1);
-        let mut t = h;
+        let mut best = *p;
         let mut side = 0i32;
         for _ in 0..UNLOAD_ITERATIONS {
-            t = if gl - gh > 0.0 {
+            let t = if gl - gh > 0.0 {
                 tl + (th - tl) * gl / (gl - gh)
             } else {
                 0.5 * (tl + th)
             };
-            let gr = g_at(t);
+            let (st, ct) = sin_cos_small(0.5 * t);
+            let r = self.advance::<ISO>(p, t, ct, st, a_h, cache, None);
+            let gr = self.g(r.sn, r.cs, r.nx, r.ny);
+            best = r;
             if gr.abs() < UNLOAD_G_TOL {
                 break;
             }
@@ -537,7 +518,6 @@ impl Strip {
                 side = 1;
             }
         }
-        let (st, ct) = sin_cos_small(0.5 * t);
-        self.advance::<ISO>(p, t, ct, st, a_h, cache, None)
+        best
     }
 }
