@@ -1,10 +1,12 @@
 //! Criterion benches of the J+T model: closed forms, elastic/plastic at
-//! several accuracies (cost vs accuracy), rigid/plastic.
+//! several accuracies (cost vs accuracy), rigid/plastic, viscoelastic.
 #![allow(missing_docs, clippy::unwrap_used)]
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use traction_rheology::{Accuracy, Inputs, Model, closed, evaluate, map::Map};
+use traction_rheology::{
+    Accuracy, Inputs, Model, Resolution, closed, evaluate, map::Map, reference,
+};
 
 fn benches(c: &mut Criterion) {
     c.bench_function("closed/slip_traction eq22", |b| {
@@ -59,6 +61,98 @@ fn benches(c: &mut Criterion) {
     g.bench_function("k=1 J=(1.5,0.3,2) tol=1e-3", |b| {
         b.iter(|| evaluate(black_box(&cases[0].1), Model::RigidPlastic, a).unwrap())
     });
+    g.finish();
+
+    // The viscoelastic model: the same cases as `cargo xtask prof-visco CASE`
+    // (k, J1, J2, J3, D, Z0, gy), and the former fixed-grid scheme at its
+    // former resolution for tol = 1e-3 (4 panels × 8 points, 633 steps).
+    let visco = [
+        (
+            "m k=1 J=(1.5,0.3,2) D=1 Z0=1",
+            1.0,
+            1.5,
+            0.3,
+            2.0,
+            1.0,
+            1.0,
+            1.0,
+        ),
+        (
+            "h k=5 J=(0,3.37,25.8) D=1 Z0=1",
+            5.0,
+            0.0,
+            3.368,
+            25.816,
+            1.0,
+            1.0,
+            1.0,
+        ),
+        (
+            "x Maxwell k=1 J=(1.5,0.3,2) D=0.3",
+            1.0,
+            1.5,
+            0.3,
+            2.0,
+            0.3,
+            f64::INFINITY,
+            1.0,
+        ),
+        (
+            "l k=1 J=(1.5,0.3,2) D=0.01 Z0=0.1",
+            1.0,
+            1.5,
+            0.3,
+            2.0,
+            0.01,
+            0.1,
+            1.0,
+        ),
+        (
+            "e k=1 J=(1.5,0.3,2) D=100 Z0=1",
+            1.0,
+            1.5,
+            0.3,
+            2.0,
+            100.0,
+            1.0,
+            1.0,
+        ),
+        (
+            "g k=0.5 J=(2,-1,10) D=1 Z0=0.5 gy=2",
+            0.5,
+            2.0,
+            -1.0,
+            10.0,
+            1.0,
+            0.5,
+            2.0,
+        ),
+    ];
+    let mut g = c.benchmark_group("viscoelastic");
+    g.sample_size(10);
+    for &(name, k, j1, j2, j3, deborah, z0, gy) in &visco {
+        let inp = Inputs::new(k, j1, j2, j3)
+            .unwrap()
+            .with_stiffness_ratio(gy)
+            .unwrap();
+        let model = Model::Viscoelastic { deborah, z0 };
+        for tol in [1e-3, 1e-4] {
+            let a = Accuracy::new(tol).unwrap();
+            g.bench_function(format!("{name} tol={tol:.0e}"), |b| {
+                b.iter(|| evaluate(black_box(&inp), model, a).unwrap())
+            });
+        }
+        if name.starts_with('m') || name.starts_with('h') {
+            let res = Resolution {
+                y_panels: 4,
+                y_points: 8,
+                s_step: 0.1,
+            };
+            g.bench_function(format!("former {name} tol=1e-3"), |b| {
+                b.iter(|| reference::viscoelastic(black_box(&inp), deborah, z0, &res, 633).unwrap())
+            });
+        }
+    }
     g.finish();
 
     // The interpolation map: warm (cells built; 64 points within ±2 % of the

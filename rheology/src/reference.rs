@@ -30,3 +30,27 @@ pub fn grid(inp: &Inputs, props: Properties, cells: usize) -> Result<Outputs, Rh
     let (j4, j5, j6) = crate::props::solve(&sc, props, cells.clamp(10, 20000));
     Ok(finish(inp, j4, j5, j6))
 }
+
+/// The former viscoelastic integrator (sinh law with the limit as a cap,
+/// [`crate::Model::Viscoelastic`]) at an explicit, fixed resolution:
+/// `res.y_panels` × `res.y_points` Gauss–Legendre strips in φ and `nsteps`
+/// uniform steps in s per strip (exponential midpoint steps, a return onto
+/// the cap, trapezoidal sums: second order in the interior, first order
+/// where the cap is active; `res.s_step` is not used). Independent of the
+/// adaptive solver of [`crate::evaluate`]; for tests and convergence
+/// studies. D and Z0 are checked as by `evaluate`; D = ∞ is integrated
+/// too (no viscous term).
+pub fn viscoelastic(
+    inp: &Inputs,
+    deborah: f64,
+    z0: f64,
+    res: &Resolution,
+    nsteps: usize,
+) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    crate::check_viscoelastic(deborah, z0)?;
+    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
+    let law = crate::visco::Law::new(z0, deborah);
+    let (j4, j5, j6) = crate::visco::reference::solve(&sc, law, res, nsteps.clamp(1, 1_000_000));
+    Ok(finish(inp, j4, j5, j6))
+}

@@ -6,106 +6,997 @@
 //! stress of equation 3) and the Deborah number D = ηU/(Ḡa), equations 2–5
 //! give along a strip
 //!
-//!   dZ/dX = v − (Z0/D)·sinh(|Z|/Z0)·Z/|Z|,   |Z| ≤ L = (3/2)√(1−X²−Y²),
+//!   dZ/dX = e − ψ(|Z|)·G·Z/|Z|,   ψ(r) = (Z0/D)·sinh(r/Z0),   |Z| ≤ L = (3/2)√(1−X²−Y²),
 //!
-//! where v is the elastic rate of the elastic/plastic model. On the cap the
-//! flow is Prandtl–Reuss (the radial return below). With a stiffness ratio
-//! gy ≠ 1 the right-hand side is G·(v − viscous rate), G = diag(1, gy), and
-//! the return onto the cap is the energy-norm closest point. The viscous term vanishes
-//! as D → ∞ and the model becomes the elastic/plastic one; for Z0 → ∞ it is
-//! the linear Maxwell fluid dZ/dX = v − Z/D.
+//! where e = G·v is the elastic rate of the elastic/plastic model (linear in
+//! X along a strip) and G = diag(1, gy) the stiffness ratio. The viscous term
+//! vanishes as D → ∞ (the elastic/plastic model); for Z0 → ∞ ψ(r) = r/D, the
+//! linear Maxwell fluid dZ/dX = e − G·Z/D.
 //!
-//! Integration: uniform steps in s (X = c·sin s) with an exponential
-//! (Lawson) midpoint step for the stiff relaxation, μ = Z0·sinh(|Z|/Z0)/(D|Z|)
-//! frozen at a predicted midpoint, followed by a radial return onto the cap;
-//! integrals by the trapezoidal rule. Second order while the cap is inactive.
+//! **On the cap** (|Z| = L) the flow is Prandtl–Reuss: with Z = L·n,
+//! dZ/dX = e − (ψ(L) + λ)·G·n, λ ≥ 0. The viscous and the plastic strain
+//! rates are both along n, so they merge: the direction obeys exactly the
+//! elastic/plastic law, dθ/dX = (t·e − (n·e − L′)·(t·G·n)/(n·G·n))/L
+//! (t ⟂ n, L′ = dL/dX), and the stress stays on the cap while
+//! λ ≥ 0, i.e. n·e − L′ ≥ ψ(L)·n·G·n (otherwise it unloads into the
+//! viscoelastic interior).
+//!
+//! **Along a strip** (half-width c = √(1−Y²)) the state is marched in the
+//! angle σ ∈ [0, π], X = −c·cos σ, in which L = (3/2)·c·sin σ and the cap's
+//! direction equation are smooth, by a four-stage Rosenbrock method of
+//! order 4 with an embedded order-3 solution (Shampine's coefficients,
+//! A-stable; the exact 2 × 2 Jacobian of the sinh relaxation, so the stiff
+//! relaxation of small D and the stiff direction relaxation on the cap at
+//! large J are stable at any step), the step chosen from the embedded error
+//! estimate (local extrapolation). Two kinds of segments alternate: the
+//! interior (state Z) and the cap (state θ, Z = L·(cos θ, sin θ)). The strip
+//! integrals ∫Zx dX, ∫Zy dX, ∫Zy·X dX are quadrature components of the same
+//! Rosenbrock stages (their rows of the Jacobian are explicit), so they are
+//! fourth order and inside the error control. An interior step that ends
+//! outside the cap, or a cap step that ends with λ < 0, is cut at the event
+//! located on the step's cubic Hermite interpolant (Illinois iteration) and
+//! repeated up to it; the state is then put onto (cap entry) or taken off
+//! (unloading) the cap, so an event is located to the interpolant's O(h⁴)
+//! instead of the first-order return of a fixed-step scheme.
+//!
+//! **Across the contact** (Y = sin φ): adaptive 4-point Gauss–Legendre
+//! panels in φ, a panel accepted when its value and the sum over its two
+//! halves differ by less than tol·width/π in J4, J5, J6 (the halves' value
+//! kept; refinement blended in between, so a panel's decision adds no jump,
+//! though the step sequence along the strips still changes discretely with
+//! the inputs), starting from panels graded towards the spin pole's strip
+//! Y_p = J1/(√k·J3), where the flow pattern changes fastest, and no wider
+//! than 0.8 rad (a wider panel can pass the test by chance).
+//!
+//! max|J| > [`crate::J_RIGID`] with the largest viscous rate ψ(3/2) below
+//! 1e-9·max|J| returns the rigid/plastic solution (the stress is on the cap
+//! everywhere).
+//!
+//! Measured accuracy and cost: crate README, section "Viscoelastic model";
+//! what was tried instead: docs/decisions/0045. The former fixed-grid scheme
+//! is kept in [`reference`] as the tests' independent reference.
 
-use std::f64::consts::FRAC_PI_2;
+use std::f64::consts::{FRAC_PI_2, PI};
 
-use crate::ep::{Resolution, Scaled, StripSums, contact_integral, return_map};
+/// Largest viscous rate ψ, μ used (the relaxation is then instantaneous at
+/// any step; keeps the 2 × 2 determinants finite).
+const RATE_MAX: f64 = 1e100;
 
-/// Relaxation rate μ(|Z|) = Z0·sinh(|Z|/Z0)/(D·|Z|) (→ 1/D at Z = 0).
+/// Step error allowed per strip step, as a multiple of the requested tol
+/// (the estimate is of the embedded order-3 solution; the order-4 solution
+/// is kept). The true strip error is 0.05–0.45 of it (the high end on long
+/// cap segments with gy ≠ 1); 2 saves 14 % of the steps but left
+/// 0.73·tol for k = 0.275, J = (1.75, −0.35, −2.28), gy = 2.35, D = 10
+/// (docs/decisions/0045).
+pub(crate) const STRIP_TOL: f64 = 1.0;
+
+/// The viscous law: Deborah number D and reference stress Z0 (`inf`: Maxwell).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Law {
+    pub z0: f64,
+    pub d: f64,
+    /// 1/D and 1/Z0.
+    id: f64,
+    iz0: f64,
+}
+
+impl Law {
+    pub(crate) fn new(z0: f64, d: f64) -> Self {
+        Law {
+            z0,
+            d,
+            id: 1.0 / d,
+            iz0: 1.0 / z0,
+        }
+    }
+
+    /// (μ, ψ′) at |Z| = r: μ = ψ(r)/r = Z0·sinh(r/Z0)/(D·r) and
+    /// ψ′ = cosh(r/Z0)/D (both 1/D at r = 0 and for Z0 = ∞).
+    #[inline]
+    fn rates(&self, r: f64) -> (f64, f64) {
+        let id = self.id;
+        let x = r * self.iz0;
+        if x < 0.01 {
+            // Also Z0 = ∞ (x = 0) and r = 0.
+            let x2 = x * x;
+            return (
+                id * (1.0 + x2 / 6.0 * (1.0 + x2 / 20.0)),
+                id * (1.0 + 0.5 * x2 * (1.0 + x2 / 12.0)),
+            );
+        }
+        let ex = x.min(700.0).exp();
+        let ix = 1.0 / ex;
+        let (sh, ch) = (0.5 * (ex - ix), 0.5 * (ex + ix));
+        ((sh / x * id).min(RATE_MAX), (ch * id).min(RATE_MAX))
+    }
+
+    /// The largest viscous rate inside the contact, ψ(3/2) (infinite when
+    /// it overflows).
+    pub(crate) fn psi_max(&self) -> f64 {
+        if self.z0.is_infinite() {
+            1.5 / self.d
+        } else {
+            self.z0 / self.d * (1.5 / self.z0).sinh()
+        }
+    }
+
+    /// ψ(r) = (Z0/D)·sinh(r/Z0), the viscous strain rate at |Z| = r.
+    #[inline]
+    fn psi(&self, r: f64) -> f64 {
+        (self.rates(r).0 * r).min(RATE_MAX)
+    }
+}
+
+/// The scaled inputs (as the elastic/plastic model's): a0 = J1/√k,
+/// b1 = J2/√k + J3·ΔX/k, q2 = J3/k, and k, ΔX, gy.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Params {
+    pub a0: f64,
+    pub b1: f64,
+    pub j3: f64,
+    pub q2: f64,
+    pub k: f64,
+    pub dx: f64,
+    pub gy: f64,
+}
+
+impl Params {
+    pub(crate) fn new(inp: &crate::Inputs) -> Self {
+        let sk = inp.k.sqrt();
+        Params {
+            a0: inp.j1 / sk,
+            b1: inp.j2 / sk + inp.j3 * inp.dx / inp.k,
+            j3: inp.j3,
+            q2: inp.j3 / inp.k,
+            k: inp.k,
+            dx: inp.dx,
+            gy: inp.gy,
+        }
+    }
+
+    /// The strip at Y: elastic rate e = (a, b1 + q2·X) with gy applied.
+    fn strip(&self, y: f64, law: Law) -> VStrip {
+        VStrip {
+            c: (1.0 - y * y).max(0.0).sqrt(),
+            a: self.a0 - self.j3 * y,
+            b1: self.gy * self.b1,
+            q2: self.gy * self.q2,
+            gy: self.gy,
+            law,
+        }
+    }
+}
+
+/// One strip: half-width c, elastic rate e = (a, b1 + q2·X) (= G·v).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct VStrip {
+    pub c: f64,
+    pub a: f64,
+    pub b1: f64,
+    pub q2: f64,
+    pub gy: f64,
+    pub law: Law,
+}
+
+/// Right-hand side at one point: the state's rate and the three quadrature
+/// rates d/dσ (∫Zx dX, ∫Zy dX, ∫Zy·X dX).
+#[derive(Debug, Clone, Copy)]
+struct Eval<const N: usize> {
+    f: [f64; N],
+    fq: [f64; 3],
+}
+
+/// Jacobian blocks at one point: ∂f/∂u, ∂fq/∂u, ∂f/∂σ, ∂fq/∂σ.
+#[derive(Debug, Clone, Copy)]
+struct Jac<const N: usize> {
+    j: [[f64; N]; N],
+    gq: [[f64; N]; 3],
+    t: [f64; N],
+    tq: [f64; 3],
+}
+
+/// A point of a strip: σ with its sine and cosine.
+#[derive(Debug, Clone, Copy)]
+struct Pt {
+    s: f64,
+    sn: f64,
+    cs: f64,
+}
+
+impl Pt {
+    fn new(s: f64) -> Self {
+        let (sn, cs) = s.sin_cos();
+        Pt { s, sn, cs }
+    }
+
+    /// The point σ + d (|d| ≤ 1): sine and cosine of d by their Taylor
+    /// series (error < 1e-16), then the rotation.
+    #[inline]
+    fn advance(&self, d: f64) -> Self {
+        let (sd, cd) = sincos_small(d);
+        Pt {
+            s: self.s + d,
+            sn: self.sn * cd + self.cs * sd,
+            cs: self.cs * cd - self.sn * sd,
+        }
+    }
+}
+
+/// (sin d, cos d) by the Taylor series for |d| ≤ 1 (error < 1e-16), by
+/// libm beyond.
 #[inline]
-fn mu(ze: f64, z0: f64, d: f64) -> f64 {
-    let r = ze / z0;
-    let shr = if r < 1e-4 {
-        1.0 + r * r / 6.0
-    } else {
-        r.sinh() / r
+fn sincos_small(d: f64) -> (f64, f64) {
+    if d.abs() > 1.0 {
+        return d.sin_cos();
+    }
+    const S: [f64; 7] = [
+        1.0 / 6.0,
+        1.0 / 20.0,
+        1.0 / 42.0,
+        1.0 / 72.0,
+        1.0 / 110.0,
+        1.0 / 156.0,
+        1.0 / 210.0,
+    ];
+    const C: [f64; 7] = [
+        1.0 / 2.0,
+        1.0 / 12.0,
+        1.0 / 30.0,
+        1.0 / 56.0,
+        1.0 / 90.0,
+        1.0 / 132.0,
+        1.0 / 182.0,
+    ];
+    let d2 = d * d;
+    let mut sv = 1.0;
+    let mut cv = 1.0;
+    for i in (0..7).rev() {
+        sv = 1.0 - d2 * S[i] * sv;
+        cv = 1.0 - d2 * C[i] * cv;
+    }
+    (d * sv, cv)
+}
+
+/// A segment type: the interior (N = 2, u = Z) or the cap (N = 1, u = θ).
+trait Seg<const N: usize> {
+    fn eval(&self, p: Pt, u: &[f64; N]) -> Eval<N>;
+    fn eval_jac(&self, p: Pt, u: &[f64; N]) -> (Eval<N>, Jac<N>);
+    /// The inverse of W = I/(γh) − J (gi = 1/(γh)).
+    fn inverse(&self, gi: f64, j: &[[f64; N]; N]) -> [[f64; N]; N];
+    /// Weight of a state error in stress units.
+    fn weight(&self) -> f64;
+}
+
+/// Interior of the cap: state Z.
+struct Interior<'a>(&'a VStrip);
+/// On the cap: state θ, Z = L·(cos θ, sin θ); n(θ) is evaluated by
+/// rotating n(θ0) of the step's start by θ − θ0.
+struct Cap<'a> {
+    st: &'a VStrip,
+    th0: f64,
+    n0: (f64, f64),
+}
+
+impl Seg<2> for Interior<'_> {
+    #[inline]
+    fn eval(&self, p: Pt, u: &[f64; 2]) -> Eval<2> {
+        let st = self.0;
+        let x = -st.c * p.cs;
+        let xp = st.c * p.sn;
+        let (zx, zy) = (u[0], u[1]);
+        let (mu, _) = st.law.rates((zx * zx + zy * zy).sqrt());
+        Eval {
+            f: [
+                xp * (st.a - mu * zx),
+                xp * (st.b1 + st.q2 * x - st.gy * mu * zy),
+            ],
+            fq: [xp * zx, xp * zy, xp * zy * x],
+        }
+    }
+
+    #[inline]
+    fn eval_jac(&self, p: Pt, u: &[f64; 2]) -> (Eval<2>, Jac<2>) {
+        let st = self.0;
+        let x = -st.c * p.cs;
+        let xp = st.c * p.sn;
+        let xpp = st.c * p.cs;
+        let (zx, zy) = (u[0], u[1]);
+        let r = (zx * zx + zy * zy).sqrt();
+        let (mu, dpsi) = st.law.rates(r);
+        let (nx, ny) = if r > 0.0 {
+            (zx / r, zy / r)
+        } else {
+            (0.0, 0.0)
+        };
+        let (gx, gyv) = (st.a - mu * zx, st.b1 + st.q2 * x - st.gy * mu * zy);
+        let ev = Eval {
+            f: [xp * gx, xp * gyv],
+            fq: [xp * zx, xp * zy, xp * zy * x],
+        };
+        // ∂(μ·Z)/∂Z = μ·I + (ψ′ − μ)·n·nᵀ, then G and −X′.
+        let w = dpsi - mu;
+        let m = [
+            [mu + w * nx * nx, w * nx * ny],
+            [w * nx * ny, mu + w * ny * ny],
+        ];
+        let j = [
+            [-xp * m[0][0], -xp * m[0][1]],
+            [-xp * st.gy * m[1][0], -xp * st.gy * m[1][1]],
+        ];
+        // ∂f/∂σ: X″·(e − μGZ) + X′·(0, q2·X′).
+        let t = [xpp * gx, xpp * gyv + xp * xp * st.q2];
+        let gq = [[xp, 0.0], [0.0, xp], [0.0, xp * x]];
+        let tq = [xpp * zx, xpp * zy, xpp * zy * x + xp * zy * xp];
+        (ev, Jac { j, gq, t, tq })
+    }
+
+    #[inline]
+    fn inverse(&self, gi: f64, j: &[[f64; 2]; 2]) -> [[f64; 2]; 2] {
+        let (a, b, c, d) = (gi - j[0][0], -j[0][1], -j[1][0], gi - j[1][1]);
+        let id = 1.0 / (a * d - b * c);
+        [[d * id, -b * id], [-c * id, a * id]]
+    }
+
+    fn weight(&self) -> f64 {
+        1.0
+    }
+}
+
+/// Smallest sin σ at which the anisotropic flow term L′ = (3/2)·cot σ is
+/// evaluated (as the elastic/plastic model's cap on it: the term is
+/// logarithmically singular at the outlet, where the stress and its weight
+/// vanish; effect below 1e-5).
+const SN_MIN: f64 = 0.02;
+
+impl<'a> Cap<'a> {
+    fn new(st: &'a VStrip, th0: f64) -> Self {
+        let (s0, c0) = th0.sin_cos();
+        Cap {
+            st,
+            th0,
+            n0: (c0, s0),
+        }
+    }
+
+    /// (cos θ, sin θ).
+    #[inline]
+    fn n(&self, th: f64) -> (f64, f64) {
+        let (sd, cd) = sincos_small(th - self.th0);
+        let (c0, s0) = self.n0;
+        (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
+    }
+
+    /// dθ/dσ = (2/3)·(t·e − (n·e − L′)·(t·G·n)/(n·G·n)) with n = (nx, ny).
+    #[inline]
+    fn rate(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
+        let st = self.st;
+        let x = -st.c * cs;
+        let (ex, ey) = (st.a, st.b1 + st.q2 * x);
+        let te = ey * nx - ex * ny;
+        if st.gy == 1.0 {
+            return te / 1.5;
+        }
+        let ne = ex * nx + ey * ny;
+        let lp = 1.5 * cs / sn.max(SN_MIN);
+        let ngn = nx * nx + st.gy * ny * ny;
+        let tgn = (st.gy - 1.0) * nx * ny;
+        (te - (ne - lp) * tgn / ngn) / 1.5
+    }
+
+    /// λ̃ = (n·e − L′ − ψ(L)·n·G·n)·sin σ: the stress stays on the cap while
+    /// λ̃ ≥ 0.
+    #[inline]
+    fn unload(&self, p: Pt, th: f64) -> f64 {
+        let st = self.st;
+        let x = -st.c * p.cs;
+        let (nx, ny) = self.n(th);
+        let ne = st.a * nx + (st.b1 + st.q2 * x) * ny;
+        let l = 1.5 * st.c * p.sn.max(0.0);
+        let ngn = nx * nx + st.gy * ny * ny;
+        ne * p.sn - 1.5 * p.cs - st.law.psi(l) * ngn * p.sn
+    }
+}
+
+impl Seg<1> for Cap<'_> {
+    #[inline]
+    fn eval(&self, p: Pt, u: &[f64; 1]) -> Eval<1> {
+        let st = self.st;
+        let x = -st.c * p.cs;
+        let (nx, ny) = self.n(u[0]);
+        let w = 1.5 * st.c * st.c * p.sn * p.sn;
+        Eval {
+            f: [self.rate(p.sn, p.cs, nx, ny)],
+            fq: [w * nx, w * ny, w * ny * x],
+        }
+    }
+
+    #[inline]
+    fn eval_jac(&self, p: Pt, u: &[f64; 1]) -> (Eval<1>, Jac<1>) {
+        let st = self.st;
+        let (sn, cs) = (p.sn, p.cs);
+        let x = -st.c * cs;
+        let xp = st.c * sn;
+        let th = u[0];
+        let (nx, ny) = self.n(th);
+        let f = self.rate(sn, cs, nx, ny);
+        let (j, t) = if st.gy == 1.0 {
+            let ne = st.a * nx + (st.b1 + st.q2 * x) * ny;
+            (-ne / 1.5, nx * st.q2 * xp / 1.5)
+        } else {
+            // Forward differences (the step error they add is O(δ·h)).
+            let d = 1e-7;
+            let (nx2, ny2) = self.n(th + d);
+            let jj = (self.rate(sn, cs, nx2, ny2) - f) / d;
+            let p2 = p.advance(d);
+            let tt = (self.rate(p2.sn, p2.cs, nx, ny) - f) / d;
+            (jj, tt)
+        };
+        let w = 1.5 * st.c * st.c * sn * sn;
+        let dw = 3.0 * st.c * st.c * sn * cs;
+        let ev = Eval {
+            f: [f],
+            fq: [w * nx, w * ny, w * ny * x],
+        };
+        let jac = Jac {
+            j: [[j]],
+            gq: [[-w * ny], [w * nx], [w * nx * x]],
+            t: [t],
+            tq: [dw * nx, dw * ny, dw * ny * x + w * ny * xp],
+        };
+        (ev, jac)
+    }
+
+    #[inline]
+    fn inverse(&self, gi: f64, j: &[[f64; 1]; 1]) -> [[f64; 1]; 1] {
+        [[1.0 / (gi - j[0][0])]]
+    }
+
+    fn weight(&self) -> f64 {
+        1.5 * self.st.c
+    }
+}
+
+// Shampine's parameters of the four-stage Rosenbrock method (order 4,
+// embedded order 3; L. F. Shampine, ACM TOMS 8 (1982) 93–113), in the
+// form (I/(γh) − J)·U_i = f(σ + α_i h, u + Σ a_ij U_j) + Σ c_ij U_j/h + γ_i·h·f_σ.
+const GAM: f64 = 0.5;
+const A21: f64 = 2.0;
+const A31: f64 = 48.0 / 25.0;
+const A32: f64 = 6.0 / 25.0;
+const C21: f64 = -8.0;
+const C31: f64 = 372.0 / 25.0;
+const C32: f64 = 12.0 / 5.0;
+const C41: f64 = -112.0 / 125.0;
+const C42: f64 = -54.0 / 125.0;
+const C43: f64 = -2.0 / 5.0;
+const B1: f64 = 19.0 / 9.0;
+const B2: f64 = 1.0 / 2.0;
+const B3: f64 = 25.0 / 108.0;
+const B4: f64 = 125.0 / 108.0;
+const E1: f64 = 17.0 / 54.0;
+const E2: f64 = 7.0 / 36.0;
+const E3: f64 = 0.0;
+const E4: f64 = 125.0 / 108.0;
+const G1: f64 = 1.0 / 2.0;
+const G2: f64 = -3.0 / 2.0;
+const G3: f64 = 121.0 / 50.0;
+const G4: f64 = 29.0 / 250.0;
+const ALPHA2: f64 = 1.0;
+const ALPHA3: f64 = 3.0 / 5.0;
+
+/// One Rosenbrock step: new state, quadrature increments, error estimate
+/// (max norm of the state error × weight and the quadrature errors).
+struct Step<const N: usize> {
+    /// σ + h.
+    p1: Pt,
+    u: [f64; N],
+    dq: [f64; 3],
+    err: f64,
+}
+
+// Fixed-size state arrays indexed in parallel (stages, Jacobian rows).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+fn ros_step<const N: usize, S: Seg<N>>(
+    seg: &S,
+    p: Pt,
+    h: f64,
+    u: &[f64; N],
+    ev0: &Eval<N>,
+    jac: &Jac<N>,
+) -> Step<N> {
+    let gi = 1.0 / (GAM * h);
+    let gh = GAM * h;
+    let ih = 1.0 / h;
+    let wi = seg.inverse(gi, &jac.j);
+    let mut th = [0.0; N];
+    for k in 0..N {
+        th[k] = h * jac.t[k];
+    }
+    let thq = [h * jac.tq[0], h * jac.tq[1], h * jac.tq[2]];
+    // Stage: r = f + g·h·f_σ + Σ c_j·U_j/h; U_u = W⁻¹·r_u,
+    // U_q = γh·(r_q + Gq·U_u).
+    let stage = |ev: &Eval<N>, g: f64, cu: [f64; N], cq: [f64; 3]| -> ([f64; N], [f64; 3]) {
+        let mut r = [0.0; N];
+        for k in 0..N {
+            r[k] = ev.f[k] + g * th[k] + ih * cu[k];
+        }
+        let mut uu = [0.0; N];
+        for k in 0..N {
+            for l in 0..N {
+                uu[k] += wi[k][l] * r[l];
+            }
+        }
+        let mut uq = [0.0; 3];
+        for i in 0..3 {
+            let mut v = ev.fq[i] + g * thq[i] + ih * cq[i];
+            for k in 0..N {
+                v += jac.gq[i][k] * uu[k];
+            }
+            uq[i] = gh * v;
+        }
+        (uu, uq)
     };
-    // Cap the argument: beyond ~700 sinh overflows; the rate is then
-    // effectively infinite (the stress relaxes within any step).
-    if !shr.is_finite() {
-        return f64::MAX / 4.0;
+    let (u1, q1) = stage(ev0, G1, [0.0; N], [0.0; 3]);
+    let mut y = *u;
+    for k in 0..N {
+        y[k] += A21 * u1[k];
     }
-    shr / d
+    let p1 = p.advance(ALPHA2 * h);
+    let e2 = seg.eval(p1, &y);
+    let mut cu = [0.0; N];
+    for k in 0..N {
+        cu[k] = C21 * u1[k];
+    }
+    let cq = [C21 * q1[0], C21 * q1[1], C21 * q1[2]];
+    let (u2, q2) = stage(&e2, G2, cu, cq);
+    let mut y = *u;
+    for k in 0..N {
+        y[k] += A31 * u1[k] + A32 * u2[k];
+        cu[k] = C31 * u1[k] + C32 * u2[k];
+    }
+    let e3 = seg.eval(p.advance(ALPHA3 * h), &y);
+    let mut cq = [0.0; 3];
+    for i in 0..3 {
+        cq[i] = C31 * q1[i] + C32 * q2[i];
+    }
+    let (u3, q3) = stage(&e3, G3, cu, cq);
+    for k in 0..N {
+        cu[k] = C41 * u1[k] + C42 * u2[k] + C43 * u3[k];
+    }
+    for i in 0..3 {
+        cq[i] = C41 * q1[i] + C42 * q2[i] + C43 * q3[i];
+    }
+    let (u4, q4) = stage(&e3, G4, cu, cq);
+    let mut un = *u;
+    let mut err = 0.0_f64;
+    let mut sum = 0.0;
+    let w = seg.weight();
+    for k in 0..N {
+        un[k] += B1 * u1[k] + B2 * u2[k] + B3 * u3[k] + B4 * u4[k];
+        let e = E1 * u1[k] + E2 * u2[k] + E3 * u3[k] + E4 * u4[k];
+        err = err.max((w * e).abs());
+        sum += un[k];
+    }
+    let mut dq = [0.0; 3];
+    for i in 0..3 {
+        dq[i] = B1 * q1[i] + B2 * q2[i] + B3 * q3[i] + B4 * q4[i];
+        let e = E1 * q1[i] + E2 * q2[i] + E3 * q3[i] + E4 * q4[i];
+        err = err.max(e.abs());
+        sum += dq[i];
+    }
+    if !sum.is_finite() || err.is_nan() {
+        err = f64::INFINITY;
+    }
+    Step { p1, u: un, dq, err }
 }
 
-/// exp(−x) and (1 − exp(−x))/x, stable for small x.
+/// Cubic Hermite interpolant on [0, 1] (step h) of y with slopes m0, m1 (per σ).
 #[inline]
-fn phi1(x: f64) -> (f64, f64) {
-    if x < 1e-6 {
-        (1.0 - x, 1.0 - 0.5 * x)
+fn hermite(y0: f64, m0: f64, y1: f64, m1: f64, h: f64, t: f64) -> f64 {
+    let t2 = t * t;
+    let t3 = t2 * t;
+    (2.0 * t3 - 3.0 * t2 + 1.0) * y0
+        + (t3 - 2.0 * t2 + t) * h * m0
+        + (-2.0 * t3 + 3.0 * t2) * y1
+        + (t3 - t2) * h * m1
+}
+
+/// The root of g on (0, 1] with g(1) > 0 (an event inside a step): a point
+/// with g < 0 is searched from t = 1/2 downwards (g(0) may be 0, at the
+/// inlet or at an unloading point), then Illinois regula falsi. Returns 0
+/// when no such point exists (the event is at the step's start).
+fn event(g: impl Fn(f64) -> f64, g1: f64) -> f64 {
+    let (mut a, mut fa) = (0.0, 0.0);
+    let mut t = 0.5;
+    let mut found = false;
+    for _ in 0..50 {
+        let v = g(t);
+        if v < 0.0 {
+            (a, fa) = (t, v);
+            found = true;
+            break;
+        }
+        t *= 0.5;
+    }
+    if !found {
+        return 0.0;
+    }
+    let (mut b, mut fb) = (1.0, g1);
+    // Illinois: halve the retained end's value when the same end is kept
+    // twice in a row.
+    let mut side = 0;
+    for _ in 0..60 {
+        let m = (a * fb - b * fa) / (fb - fa);
+        let m = if m.is_finite() && m > a && m < b {
+            m
+        } else {
+            0.5 * (a + b)
+        };
+        let fm = g(m);
+        if fm < 0.0 {
+            (a, fa) = (m, fm);
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        } else {
+            (b, fb) = (m, fm);
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        }
+        if b - a < 1e-10 {
+            break;
+        }
+    }
+    b
+}
+
+/// Largest number of cap ↔ interior switches per strip (then the stress
+/// stays on the cap).
+const MAX_SWITCH: usize = 24;
+/// Steps per strip after which steps are accepted regardless of the error
+/// estimate: guarantees termination at extreme inputs (where the tolerance
+/// is then not held).
+const MAX_STEPS: usize = 1000;
+
+#[derive(Clone, Copy)]
+enum Mode {
+    Interior([f64; 2]),
+    Cap(f64),
+}
+
+/// Step-size factor from an error ratio (order-3 estimate).
+#[inline]
+fn factor(err: f64, atol: f64) -> f64 {
+    if err == 0.0 {
+        4.0
     } else {
-        let e = (-x).exp();
-        (e, (1.0 - e) / x)
+        (0.9 * (atol / err).sqrt().sqrt()).clamp(0.2, 4.0)
     }
 }
 
-fn strip_sums(st: &crate::ep::Strip, nsteps: usize, z0: f64, d: f64) -> StripSums {
-    let c = st.c;
-    let mut acc = StripSums::default();
-    if c <= 0.0 {
-        return acc;
+/// Longest step in σ (the Taylor sine and cosine of [`Pt::advance`] hold
+/// for |d| ≤ 1).
+const H_MAX: f64 = 0.8;
+
+/// The point at σ + h, exactly (0, −1) at the outlet.
+#[inline]
+fn end_point(p1: Pt, last: bool) -> Pt {
+    if last {
+        Pt {
+            s: PI,
+            sn: 0.0,
+            cs: -1.0,
+        }
+    } else {
+        p1
     }
-    let h = std::f64::consts::PI / nsteps as f64;
-    let (mut zx, mut zy) = (0.0_f64, 0.0_f64);
-    let mut s = -FRAC_PI_2;
-    let mut prev = (0.0, 0.0, -c); // (zx, zy, x) at the step start
-    for i in 0..nsteps {
-        let s1 = if i + 1 == nsteps { FRAC_PI_2 } else { s + h };
-        let x0 = c * s.sin();
-        let x1 = c * s1.sin();
-        let dxs = x1 - x0;
-        let xm = 0.5 * (x0 + x1);
-        // Elastic increment over the step (v is linear in X: exact midpoint).
-        let (vx, vy) = (st.a, st.b1 + st.q2 * xm);
-        // Predictor: rate at the start, then at the predicted midpoint. The
-        // viscous strain rate μ·Z acts through G = diag(1, gy): Zy relaxes
-        // at gy·μ.
-        let gy = st.gy;
-        let m0 = mu(zx.hypot(zy), z0, d);
-        let (e0x, p0x) = phi1(m0 * 0.5 * dxs);
-        let (e0y, p0y) = phi1(gy * m0 * 0.5 * dxs);
-        let (pmx, pmy) = (
-            zx * e0x + 0.5 * dxs * p0x * vx,
-            zy * e0y + 0.5 * dxs * p0y * vy,
-        );
-        let mm = mu(pmx.hypot(pmy), z0, d);
-        let (ex, px) = phi1(mm * dxs);
-        let (ey, py) = phi1(gy * mm * dxs);
-        let nx = zx * ex + dxs * px * vx;
-        let ny = zy * ey + dxs * py * vy;
-        // Return onto the limit (3/2)·c·cos s1 (radial for gy = 1).
-        let l1 = 1.5 * c * s1.cos().max(0.0);
-        (zx, zy) = return_map(nx, ny, l1, gy);
-        // Trapezoidal sums in X.
-        acc.ix += 0.5 * dxs * (prev.0 + zx);
-        acc.iy += 0.5 * dxs * (prev.1 + zy);
-        acc.ixy += 0.5 * dxs * (prev.1 * prev.2 + zy * x1);
-        prev = (zx, zy, x1);
-        s = s1;
+}
+
+/// Strip integrals [∫Zx dX, ∫Zy dX, ∫Zy·X dX] with step error ≤ atol.
+#[allow(clippy::needless_range_loop)]
+pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
+    let mut q = [0.0; 3];
+    if st.c <= 0.0 {
+        return q;
+    }
+    let inter = Interior(st);
+    // At the inlet Z ≈ e·c·σ²/2 against L ≈ (3/2)·c·σ: the first step keeps
+    // |Z|/L ≤ 1/2.
+    let ein = st.a.hypot(st.b1 - st.q2 * st.c);
+    let mut h = 0.2 * atol.sqrt().sqrt();
+    if ein > 0.0 {
+        h = h.min(1.5 / ein);
+    }
+    let mut p = Pt {
+        s: 0.0,
+        sn: 0.0,
+        cs: 1.0,
+    };
+    let mut mode = Mode::Interior([0.0, 0.0]);
+    let mut switches = 0;
+    let mut steps = 0;
+    let lcap = |sn: f64| 1.5 * st.c * sn.max(0.0);
+    let add = |q: &mut [f64; 3], d: &[f64; 3]| {
+        for i in 0..3 {
+            q[i] += d[i];
+        }
+    };
+    while p.s < PI {
+        let hmax = PI - p.s;
+        h = h.min(H_MAX);
+        let last = h >= hmax;
+        if last {
+            h = hmax;
+        }
+        match mode {
+            Mode::Interior(z) => {
+                let (ev0, jac) = inter.eval_jac(p, &z);
+                let (stp, h1) = loop {
+                    steps += 1;
+                    let stp = ros_step(&inter, p, h, &z, &ev0, &jac);
+                    if stp.err <= atol || steps > MAX_STEPS {
+                        break (stp, h);
+                    }
+                    h *= factor(stp.err, atol).min(0.9);
+                };
+                let last = last && h1 == hmax;
+                let p1 = end_point(stp.p1, last);
+                let l1 = lcap(p1.sn);
+                let r1 = (stp.u[0] * stp.u[0] + stp.u[1] * stp.u[1]).sqrt();
+                if r1 > l1 {
+                    // Cap entry inside the step: |H(t)|² − L² changes sign.
+                    let ev1 = inter.eval(p1, &stp.u);
+                    let g = |t: f64| {
+                        let zx = hermite(z[0], ev0.f[0], stp.u[0], ev1.f[0], h1, t);
+                        let zy = hermite(z[1], ev0.f[1], stp.u[1], ev1.f[1], h1, t);
+                        zx * zx + zy * zy - lcap(p.advance(t * h1).sn).powi(2)
+                    };
+                    let t = event(g, r1 * r1 - l1 * l1);
+                    let zs = if t >= 1.0 {
+                        add(&mut q, &stp.dq);
+                        p = p1;
+                        stp.u
+                    } else if t > 0.0 {
+                        let hs = t * h1;
+                        let e = ros_step(&inter, p, hs, &z, &ev0, &jac);
+                        add(&mut q, &e.dq);
+                        p = Pt::new(p.s + hs);
+                        e.u
+                    } else {
+                        z
+                    };
+                    let th = if zs[1] == 0.0 && zs[0] == 0.0 {
+                        st.b1.atan2(st.a)
+                    } else {
+                        zs[1].atan2(zs[0])
+                    };
+                    mode = Mode::Cap(th);
+                    switches += 1;
+                } else {
+                    add(&mut q, &stp.dq);
+                    p = p1;
+                    mode = Mode::Interior(stp.u);
+                }
+                h = h1 * factor(stp.err, atol);
+            }
+            Mode::Cap(th) => {
+                let u = [th];
+                let cap = Cap::new(st, th);
+                let (ev0, jac) = cap.eval_jac(p, &u);
+                let (stp, h1) = loop {
+                    steps += 1;
+                    let stp = ros_step(&cap, p, h, &u, &ev0, &jac);
+                    if stp.err <= atol || steps > MAX_STEPS {
+                        break (stp, h);
+                    }
+                    h *= factor(stp.err, atol).min(0.9);
+                };
+                let last = last && h1 == hmax;
+                let p1 = end_point(stp.p1, last);
+                let lam1 = if switches < MAX_SWITCH && !last {
+                    cap.unload(p1, stp.u[0])
+                } else {
+                    0.0
+                };
+                if lam1 < 0.0 {
+                    let ev1 = cap.eval(p1, &stp.u);
+                    // −λ̃ along the interpolated θ changes sign at unloading.
+                    let g = |t: f64| {
+                        let th = hermite(th, ev0.f[0], stp.u[0], ev1.f[0], h1, t);
+                        -cap.unload(p.advance(t * h1), th)
+                    };
+                    let t = event(g, -lam1);
+                    let ths = if t >= 1.0 {
+                        add(&mut q, &stp.dq);
+                        p = p1;
+                        stp.u[0]
+                    } else if t > 0.0 {
+                        let hs = t * h1;
+                        let e = ros_step(&cap, p, hs, &u, &ev0, &jac);
+                        add(&mut q, &e.dq);
+                        p = Pt::new(p.s + hs);
+                        e.u[0]
+                    } else {
+                        th
+                    };
+                    let l = lcap(p.sn);
+                    let (cx, sy) = cap.n(ths);
+                    mode = Mode::Interior([l * cx, l * sy]);
+                    switches += 1;
+                } else {
+                    add(&mut q, &stp.dq);
+                    p = p1;
+                    mode = Mode::Cap(stp.u[0]);
+                }
+                h = h1 * factor(stp.err, atol);
+            }
+        }
+        if h.is_nan() || h <= 0.0 || h.is_infinite() {
+            h = 1e-3;
+        }
+    }
+    q
+}
+
+/// 4-point Gauss–Legendre rule on [−1, 1].
+const GL4: [(f64, f64); 4] = [
+    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
+    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
+];
+
+/// Sums (∫Zx, ∫Zy, ∫Zy·X, ∫Zx·Y over strips) of one φ-panel.
+fn panel_sums(lo: f64, hi: f64, strip_fn: &mut impl FnMut(f64) -> [f64; 3]) -> [f64; 4] {
+    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+    let mut acc = [0.0; 4];
+    for &(t, w) in &GL4 {
+        let (y, cphi) = (mid + half * t).sin_cos();
+        let wt = half * w * cphi;
+        let st = strip_fn(y);
+        acc[0] += wt * st[0];
+        acc[1] += wt * st[1];
+        acc[2] += wt * st[2];
+        acc[3] += wt * y * st[0];
     }
     acc
 }
 
-/// Viscoelastic (J4, J5, J6).
-pub(crate) fn solve(
-    sc: &Scaled,
-    res: &Resolution,
-    nsteps: usize,
-    z0: f64,
-    d: f64,
-) -> (f64, f64, f64) {
-    contact_integral(sc, res, |st| strip_sums(st, nsteps, z0, d))
+/// (J4, J5, J6) from the contact sums; J6 about the spin pole (crate docs).
+fn to_j(p: &Params, s: &[f64; 4]) -> (f64, f64, f64) {
+    (
+        s[0] / PI,
+        s[1] / PI,
+        (s[2] + p.dx * s[1] - p.k * s[3]) / (PI * p.k.sqrt()),
+    )
 }
+
+/// Blend between a panel's value and its refinement: from BLEND.0 to BLEND.1
+/// times the allowed change.
+const BLEND: (f64, f64) = (1.0, 2.0);
+/// Largest panel depth below the initial panels.
+const MAX_DEPTH: u32 = 12;
+/// First graded panel width from the spin pole's strip, in φ: POLE_GRADING/|J3|.
+const POLE_GRADING: f64 = 8.0;
+/// Narrowest graded panel (reached for |J3| > 800): bounds the number of
+/// initial strips at huge spin (finer structure near the pole is left to the
+/// adaptive refinement).
+const W0_MIN: f64 = 0.01;
+/// Widest initial panel in φ; wider ones are split into equal parts. A
+/// panel whose 4-point value and halves agree by chance is accepted
+/// unresolved (the halves' value kept): with the pole-graded panels alone,
+/// k = 4.51, J = (0.158, −1.88, −5.67), D = 0.167, Z0 = 2.5 was off by
+/// 2.2·tol at tol = 1e-4 (J6). On 2 × 160 random cases 0.8 leaves a worst
+/// error/tol of 0.48 (1.0: 0.97; 0.6: 0.17 at 20 % more strips).
+const W_MAX: f64 = 0.8;
+/// Largest number of initial panel edges.
+const MAX_BREAKS: usize = 64;
+
+#[inline]
+fn smooth_step(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Initial panel edges in φ graded geometrically towards the spin pole's
+/// strip (clamped to the contact's edge when outside), widths doubling
+/// outwards from POLE_GRADING/|J3|; the two halves for J3 = 0.
+fn initial_breaks(p: &Params, out: &mut [f64; MAX_BREAKS]) -> usize {
+    let yp = p.a0 / p.j3;
+    if !yp.is_finite() {
+        out[..3].copy_from_slice(&[-FRAC_PI_2, 0.0, FRAC_PI_2]);
+        return 3;
+    }
+    let pp = yp.clamp(-1.0, 1.0).asin();
+    let w0 = (POLE_GRADING / p.j3.abs()).max(W0_MIN);
+    let side = MAX_BREAKS / 2 - 2;
+    let mut n = 1;
+    let mut w = w0;
+    while pp - w > -FRAC_PI_2 + 0.5 * w && n <= side {
+        out[n] = pp - w;
+        n += 1;
+        w *= 2.0;
+    }
+    out[1..n].reverse();
+    out[0] = -FRAC_PI_2;
+    out[n] = pp;
+    n += 1;
+    let mut w = w0;
+    let lim = n + side;
+    while pp + w < FRAC_PI_2 - 0.5 * w && n < lim {
+        out[n] = pp + w;
+        n += 1;
+        w *= 2.0;
+    }
+    out[n] = FRAC_PI_2;
+    n + 1
+}
+
+/// Viscoelastic (J4, J5, J6) at the accuracy tol.
+pub(crate) fn solve(p: &Params, law: Law, tol: f64) -> (f64, f64, f64) {
+    let atol = STRIP_TOL * tol;
+    let mut strip_fn = |y: f64| strip_sums(&p.strip(y, law), atol);
+    let mut b0 = [0.0; MAX_BREAKS];
+    let nb0 = initial_breaks(p, &mut b0);
+    // Panels wider than W_MAX are split into equal parts (at most 4: the
+    // widest initial panel spans π).
+    let mut breaks = [0.0; 4 * MAX_BREAKS];
+    breaks[0] = b0[0];
+    let mut nb = 1;
+    for w in b0[..nb0].windows(2) {
+        let parts = ((w[1] - w[0]) / W_MAX).ceil().clamp(1.0, 4.0) as usize;
+        for i in 1..=parts {
+            breaks[nb] = w[0] + (w[1] - w[0]) * i as f64 / parts as f64;
+            nb += 1;
+        }
+    }
+    let mut total = [0.0; 4];
+    let mut stack: Vec<(f64, f64, [f64; 4], u32, f64)> = Vec::with_capacity(32);
+    for w in breaks[..nb].windows(2) {
+        let (lo, hi) = (w[0], w[1]);
+        if hi > lo {
+            let v = panel_sums(lo, hi, &mut strip_fn);
+            stack.push((lo, hi, v, 0, 1.0));
+        }
+    }
+    while let Some((lo, hi, coarse, depth, weight)) = stack.pop() {
+        let m = 0.5 * (lo + hi);
+        let l = panel_sums(lo, m, &mut strip_fn);
+        let r = panel_sums(m, hi, &mut strip_fn);
+        let fine = [l[0] + r[0], l[1] + r[1], l[2] + r[2], l[3] + r[3]];
+        let d = [
+            fine[0] - coarse[0],
+            fine[1] - coarse[1],
+            fine[2] - coarse[2],
+            fine[3] - coarse[3],
+        ];
+        let (e4, e5, e6) = to_j(p, &d);
+        let err = e4.abs().max(e5.abs()).max(e6.abs());
+        let allowed = tol * (hi - lo) / PI;
+        let refine = if depth >= MAX_DEPTH || err.is_nan() {
+            0.0
+        } else {
+            smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
+        };
+        if refine < 1.0 {
+            let w = weight * (1.0 - refine);
+            for i in 0..4 {
+                total[i] += w * fine[i];
+            }
+        }
+        if refine > 0.0 {
+            stack.push((lo, m, l, depth + 1, weight * refine));
+            stack.push((m, hi, r, depth + 1, weight * refine));
+        }
+    }
+    to_j(p, &total)
+}
+
+pub(crate) mod reference;
+
+#[cfg(test)]
+mod tests;

@@ -1,6 +1,7 @@
 //! Developer tools of the traction workspace (`cargo xtask COMMAND ARGS`):
 //!
 //! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
+//! - `prof-visco CASE TOL REPS [old]`: the same for the viscoelastic benches;
 //! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
 //!   random points.
 //!
@@ -9,11 +10,15 @@
 
 mod map_check;
 mod prof;
+mod prof_visco;
 
 const USAGE: &str = "usage: cargo xtask COMMAND ARGS
 commands:
   prof [CASE [TOL [REPS]]]        callgrind driver: CASE m h p s a b c (bench set, prof.rs),
                                   TOL accuracy (default 1e-3), REPS evaluations (default 1)
+  prof-visco [CASE [TOL [REPS [old]]]]
+                                  the same for the viscoelastic model: CASE m h x l e g
+                                  (prof_visco.rs); `old` = the former fixed-grid scheme
   map-check K TOL N RLOG [DX GY]  rheology map against evaluate at TOL/100 on N random
                                   points, |J| log-uniform in [0.1, 10^(RLOG-1)]";
 
@@ -21,6 +26,7 @@ fn main() -> std::process::ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
         Some("prof") => prof::run(&args[1..]),
+        Some("prof-visco") => prof_visco::run(&args[1..]),
         Some("map-check") => map_check::run(&args[1..]),
         Some("help" | "-h" | "--help") => {
             println!("{USAGE}");

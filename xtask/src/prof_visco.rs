@@ -1,0 +1,58 @@
+//! Callgrind driver for the viscoelastic benches: `prof-visco CASE TOL REPS
+//! [old]`; instructions per evaluation = (Ir(REPS=3) − Ir(1))/2. `old` runs
+//! the former fixed-grid scheme with its former resolution at TOL
+//! (`reference::viscoelastic`: 2·⌊max(1, −log10 TOL − 1)⌋ panels of 8
+//! points, ⌈20·10^(−log10(TOL)/2)⌉ uniform steps per strip).
+#![allow(clippy::unwrap_used)]
+use crate::arg;
+use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate, reference};
+
+/// A case: (letter, k, J1, J2, J3, D, Z0, gy).
+pub type Case = (&'static str, f64, f64, f64, f64, f64, f64, f64);
+
+/// The bench set, the same as the crate's criterion bench group
+/// `viscoelastic`.
+pub const CASES: [Case; 6] = [
+    ("m", 1.0, 1.5, 0.3, 2.0, 1.0, 1.0, 1.0),
+    ("h", 5.0, 0.0, 3.368, 25.816, 1.0, 1.0, 1.0),
+    ("x", 1.0, 1.5, 0.3, 2.0, 0.3, f64::INFINITY, 1.0),
+    ("l", 1.0, 1.5, 0.3, 2.0, 0.01, 0.1, 1.0),
+    ("e", 1.0, 1.5, 0.3, 2.0, 100.0, 1.0, 1.0),
+    ("g", 0.5, 2.0, -1.0, 10.0, 1.0, 0.5, 2.0),
+];
+
+/// Runs the driver with the command line's arguments after `prof-visco`.
+pub fn run(a: &[String]) -> Result<(), String> {
+    let case = a.first().map(|s| s.as_str()).unwrap_or("m");
+    let tol: f64 = arg(a, 1, "TOL", Some(1e-3))?;
+    let reps: usize = arg(a, 2, "REPS", Some(1))?;
+    let old = a.get(3).is_some_and(|s| s == "old");
+    let &(_, k, j1, j2, j3, deborah, z0, gy) = CASES
+        .iter()
+        .find(|c| c.0 == case)
+        .ok_or_else(|| format!("unknown case `{case}`"))?;
+    let inp = Inputs::new(k, j1, j2, j3)
+        .and_then(|i| i.with_stiffness_ratio(gy))
+        .map_err(|e| e.to_string())?;
+    let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
+    let lt = -tol.log10();
+    let res = Resolution {
+        y_panels: ((lt - 1.0).max(1.0) * 2.0) as usize,
+        y_points: 8,
+        s_step: 0.1,
+    };
+    let nsteps = (20.0 * 10f64.powf(lt * 0.5)).ceil().clamp(40.0, 20000.0) as usize;
+    let eval = |i: &Inputs| {
+        if old {
+            reference::viscoelastic(i, deborah, z0, &res, nsteps).unwrap()
+        } else {
+            evaluate(i, Model::Viscoelastic { deborah, z0 }, acc).unwrap()
+        }
+    };
+    let mut o = eval(&inp);
+    for _ in 1..reps {
+        o = eval(std::hint::black_box(&inp));
+    }
+    println!("{:.10} {:.10} {:.10}", o.j4, o.j5, o.j6);
+    Ok(())
+}
