@@ -387,7 +387,8 @@ impl Accuracy {
 /// max|J| > [`J_RIGID`]. Otherwise it integrates strips with adaptive panels
 /// in Y (4 Gauss points each, starting from panels graded towards the spin
 /// pole's strip, refinement blended so that the outputs are continuous in
-/// the inputs) and the s-step [`Accuracy::s_step`], doubled on
+/// the inputs; for J1 = 0 only Y ≥ 0, the strips being mirror images about
+/// Y = 0) and the s-step [`Accuracy::s_step`], doubled on
 /// plastic segments that stay non-stiff (κ·h below the RK4 stability
 /// margin) at the doubled step.
 pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, RheologyError> {

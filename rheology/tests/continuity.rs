@@ -60,3 +60,48 @@ fn spin_moment_is_continuous_at_zero_spin() {
     let o = ev(&Inputs::new(0.5, 0.0, 1.0, 0.0).unwrap(), 1e-4);
     assert!((o.j6 - 0.140_14).abs() < 1e-5, "{}", o.j6);
 }
+
+#[test]
+fn half_contact_without_longitudinal_slip_matches_full_integration() {
+    // J1 = 0: `evaluate` integrates only Y ≥ 0 and mirrors (J4 = 0, J5 and J6
+    // doubled). At J1 = ±1e-15 the whole contact is integrated, with the same
+    // panel decisions (mirrored panels give the same change). The two differ
+    // only by the strip integrator's discrete choices (step counts, the
+    // start of unloading), which move the result by up to 2.5e-7 under a
+    // change of J1 by 1e-16 alone (k = 0.2, J = (·, −1.5, 8), ΔX = 0.1, with
+    // or without the half-contact rule; ≤ 8e-9 elsewhere here). Bound
+    // tol/100: ≥ 40× that noise, while a wrong parity or factor shows as
+    // O(0.1). Spin from slip-dominated to high, with ΔX and gy ≠ 1.
+    for &(k, j2, j3, dx, gy) in &[
+        (5.0, 3.368, 25.816, 0.0, 1.0),
+        (1.0, 0.96, 2.28, 0.0, 1.0),
+        (0.2, -1.5, 8.0, 0.1, 1.0),
+        (2.0, 0.5, -12.0, -0.2, 1.0),
+        (1.0, 2.0, 5.0, 0.0, 3.0),
+        (0.5, 0.0, 4.0, 0.0, 0.5),
+    ] {
+        for tol in [1e-3, 1e-4] {
+            let at = |j1: f64| {
+                let i = Inputs::with_offset(k, j1, j2, j3, dx)
+                    .unwrap()
+                    .with_stiffness_ratio(gy)
+                    .unwrap();
+                ev(&i, tol)
+            };
+            let zero = at(0.0);
+            assert_eq!(zero.j4, 0.0);
+            for j1 in [1e-15, -1e-15] {
+                let o = at(j1);
+                let d = (o.j4 - zero.j4)
+                    .abs()
+                    .max((o.j5 - zero.j5).abs())
+                    .max((o.j6 - zero.j6).abs());
+                println!("k={k} J2={j2} J3={j3} tol={tol:e} J1={j1:e}: {d:.2e}");
+                assert!(
+                    d < tol / 100.0,
+                    "k={k} J=({j1},{j2},{j3}) dX={dx} gy={gy} tol={tol}: {d:e}"
+                );
+            }
+        }
+    }
+}

@@ -180,3 +180,38 @@ fn accuracy_parameter_is_met_on_random_cases() {
     }
     println!("worst error/tol over {} cases: {worst:.2}", cases.len());
 }
+
+#[test]
+fn accuracy_parameter_is_met_on_random_high_spin_cases() {
+    // 40 pseudo-random high-spin cases (fixed seed): k ∈ {0.2, 0.5, 1, 2, 5},
+    // |J1|, |J2| ≤ 5, J3 ∈ [0.5, 26]; every fifth case with J1 = 0, where
+    // `evaluate` integrates half the contact and mirrors it. Error ≤ tol at
+    // tol = 1e-3 and 1e-4 against the fixed-resolution strip integrator
+    // (`reference::elastic_plastic`, 128 panels of 8 points, h = 0.004),
+    // whose own error is bounded by its difference to 64 panels, h = 0.008:
+    // required < 1e-5 (≤ tol/10 at 1e-4) for every case.
+    let ks = [0.2, 0.5, 1.0, 2.0, 5.0];
+    let mut lcg = Lcg::new(0x4869_5370_696e);
+    let mut rnd = || lcg.unit();
+    let mut worst: f64 = 0.0;
+    for n in 0..40 {
+        let k = ks[((rnd() * 5.0) as usize).min(4)];
+        let j1 = if n % 5 == 4 { 0.0 } else { 10.0 * rnd() - 5.0 };
+        let j2 = 10.0 * rnd() - 5.0;
+        let j3 = 0.5 + 25.5 * rnd();
+        let i = Inputs::new(k, j1, j2, j3).unwrap();
+        let r = run(&i, 128, 0.004);
+        let r2 = run(&i, 64, 0.008);
+        assert!(
+            err(&r, &r2) < 1e-5,
+            "reference not converged: {k} {j1} {j2} {j3}"
+        );
+        for tol in [1e-3, 1e-4] {
+            let o = evaluate(&i, Model::ElasticPlastic, Accuracy::new(tol).unwrap()).unwrap();
+            let e = err(&o, &r);
+            worst = worst.max(e / tol);
+            assert!(e <= tol, "k={k} J=({j1},{j2},{j3}) tol {tol}: error {e}");
+        }
+    }
+    println!("worst error/tol over 40 high-spin cases: {worst:.2}");
+}

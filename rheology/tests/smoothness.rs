@@ -33,13 +33,17 @@ fn no_tolerance_driven_jumps() {
     // |Δf'|·1e-4 ≲ 1e-5, a jump of the discretisation its full size. Lines
     // through a moderate case, across the singular surface J2* ≈ 3.3 of the
     // high-spin case k = 5, J3 = 25.8, and near the spin pole at k = 0.2
-    // (where panel decisions flip most often); at tol = 1e-3 every second
-    // difference must stay below tol/10.
+    // (where panel decisions flip most often), and along J1 through J1 = 0
+    // (hit exactly at the 101st point) in the high-spin case, where
+    // `evaluate` switches to integrating half the contact; at tol = 1e-3
+    // every second difference must stay below tol/10.
     let tol = 1e-3;
-    let lines: [(f64, [f64; 3], [f64; 3], usize); 3] = [
+    let lines: [(f64, [f64; 3], [f64; 3], usize); 5] = [
         (1.0, [1.3, 0.3, 2.0], [1.0, 0.0, 0.0], 400),
         (5.0, [0.0, 3.25, 25.8], [0.0, 1.0, 0.0], 300),
         (0.2, [0.11, 0.08, 0.70], [0.3, 0.2, 1.0], 1200),
+        (5.0, [-(100.0 * 1e-4), 3.37, 25.8], [1.0, 0.0, 0.0], 201),
+        (0.07, [0.11, 1.93, -25.0], [0.2, 0.1, 1.0], 300),
     ];
     for (k, p, d, n) in lines {
         let m = max_second_difference(k, p, d, 1e-4, n, tol);
