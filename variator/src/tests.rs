@@ -495,7 +495,8 @@ fn warm_started_balance_gives_the_cold_solution() {
     // level and the outputs agree to ~1e-12 of their size, plus the rheology
     // integrator's adaptive-refinement ripple between two nearby roots
     // (≤ 7e-11 of the throughput, power_balance_to_round_off). Bound 1e-9.
-    // A ramp of creep, a tilt step, a load step, a reversal of the power flow.
+    // A ramp of creep, a tilt step, a load step, a reversal of the power
+    // flow, then a slow creep ramp as a co-simulation's steps make it.
     let warm = standard();
     let mut seq = Vec::new();
     for i in 0..6 {
@@ -506,15 +507,23 @@ fn warm_started_balance_gives_the_cold_solution() {
         (0.012, 0.25, 15e3),
         (-0.01, 0.25, 15e3),
     ]);
+    let slow_from = seq.len();
+    for i in 0..6 {
+        seq.push((0.01 + 1e-5 * f64::from(i), 0.25, 15e3));
+    }
     let (mut warm_iters, mut cold_iters) = (0, 0);
-    for (creep, tilt, load) in seq {
+    for (n, (creep, tilt, load)) in seq.into_iter().enumerate() {
         let p = point(&warm, 300.0, creep, tilt, load);
         let a = warm.evaluate(&p).unwrap();
         let cold = warm.clone();
         *cold.hint.lock().unwrap() = None;
         let b = cold.evaluate(&p).unwrap();
-        warm_iters += a.iterations;
-        cold_iters += b.iterations;
+        // The iterations saved on the slow ramp: the jumps before it may
+        // take as many warm as cold (the previous root is no closer there).
+        if n > slow_from {
+            warm_iters += a.iterations;
+            cold_iters += b.iterations;
+        }
         for (name, x, y) in [
             ("torque_in", a.torque_in, b.torque_in),
             ("torque_out", a.torque_out, b.torque_out),
@@ -529,6 +538,9 @@ fn warm_started_balance_gives_the_cold_solution() {
         let scale = a.power_in.abs().max(a.power_out.abs());
         assert!(a.power_balance_residual.abs() <= 1e-10 * scale, "{a:?}");
     }
+    // Fewer iterations warm than cold on the slow ramp (measured 46 against
+    // 59 over its last five steps; over the jumps they were within 2 of each
+    // other, too close to assert).
     assert!(warm_iters < cold_iters, "{warm_iters} vs {cold_iters}");
 }
 
