@@ -497,8 +497,8 @@ impl Strip {
     /// dg/ds of the state reached, each kept inside the bracket (regula
     /// falsi, Illinois, where it would leave it); at most
     /// [`UNLOAD_ITERATIONS`] integrations or until |g| < [`UNLOAD_G_TOL`].
-    /// Usually two integrations (|g| ≈ 1e-8, then round-off), where regula
-    /// falsi alone took four to six, to the same point.
+    /// Two integrations (|g| ≈ 1e-8, then round-off), where regula falsi
+    /// alone took 4–5, to the same point.
     #[allow(clippy::too_many_arguments)]
     fn locate_unload<const ISO: bool>(
         &self,
