@@ -67,6 +67,12 @@ pub const MU_USER_RANGE: Range = Range::open(0.0, 1.0);
 /// grows as the tolerance falls).
 pub const TOLERANCE_RANGE: Range = Range::closed(1e-6, 1e-2);
 
+/// Valid `mu_rise_scale`: [1e-3, 1e6] K. Narrower than traction-contact's
+/// [`traction_contact::thermal::RISE_SCALE_RANGE`] (0, ∞]: an FMI Real
+/// parameter has a finite default, so "no second-order term" is the default
+/// 1e6 K (ΔT²/T*² < 4e-6 below the fixed point's 2000 K runaway limit).
+pub const MU_RISE_SCALE_RANGE: Range = Range::closed(1e-3, 1e6).with_unit("K");
+
 /// The fluid whose slope `m` and peak `μ` the contact uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Fluid {
@@ -219,6 +225,10 @@ pub struct Parameters {
     pub mu_temperature_coefficient: f64,
     /// Temperature coefficient β_m of the user fluid's m, 1/K.
     pub m_temperature_coefficient: f64,
+    /// Temperature scale T* of the second-order term of the user fluid's μ
+    /// law, K (traction-contact `Thermal::mu_rise_scale`; 1e6 K: the
+    /// first-order law to within 4e-6 of μ).
+    pub mu_rise_scale: f64,
 }
 
 /// One operating state of the contact (SI units).
@@ -338,11 +348,13 @@ fn thermal(p: &Parameters) -> Result<Option<traction_contact::Thermal>, PhysicsE
             ] {
                 thermal::TEMPERATURE_COEFFICIENT_RANGE.check(name, b)?;
             }
+            MU_RISE_SCALE_RANGE.check("mu_rise_scale", p.mu_rise_scale)?;
             traction_contact::Thermal {
                 film: traction_contact::Film::Thickness(h),
                 fluid_conductivity: Some(k),
                 mu_coefficient: Some(p.mu_temperature_coefficient),
                 slope_coefficient: Some(p.m_temperature_coefficient),
+                mu_rise_scale: Some(p.mu_rise_scale),
                 ..traction_contact::Thermal::default()
             }
         }
@@ -581,6 +593,7 @@ mod tests {
             fluid_conductivity: 0.11,
             mu_temperature_coefficient: 0.0025,
             m_temperature_coefficient: 0.0,
+            mu_rise_scale: 1e6,
         }
     }
 

@@ -138,6 +138,7 @@ fn default_parameters() -> traction_fmu::physics::Parameters {
         fluid_conductivity: s("fluid_conductivity"),
         mu_temperature_coefficient: s("mu_temperature_coefficient"),
         m_temperature_coefficient: s("m_temperature_coefficient"),
+        mu_rise_scale: s("mu_rise_scale"),
     }
 }
 

@@ -183,6 +183,7 @@ impl TractionFmu {
             fluid_conductivity: s.param::<{ vr::FLUID_CONDUCTIVITY }>(),
             mu_temperature_coefficient: s.param::<{ vr::MU_TEMPERATURE_COEFFICIENT }>(),
             m_temperature_coefficient: s.param::<{ vr::M_TEMPERATURE_COEFFICIENT }>(),
+            mu_rise_scale: s.param::<{ vr::MU_RISE_SCALE }>(),
         })
     }
 

@@ -479,6 +479,7 @@ fn thermal_parameter_equals_traction_contact() {
         (vr::FLUID_CONDUCTIVITY, 0.12),
         (vr::MU_TEMPERATURE_COEFFICIENT, 0.004),
         (vr::M_TEMPERATURE_COEFFICIENT, 0.001),
+        (vr::MU_RISE_SCALE, 300.0),
     ];
     let (_, on) = run(&reals, &[], &[(vr::THERMAL, true)]).unwrap();
     let thermal = traction_contact::Thermal {
@@ -486,6 +487,7 @@ fn thermal_parameter_equals_traction_contact() {
         fluid_conductivity: Some(0.12),
         mu_coefficient: Some(0.004),
         slope_coefficient: Some(0.001),
+        mu_rise_scale: Some(300.0),
         ..traction_contact::Thermal::default()
     };
     let c = traction_contact::TractionContact::new(
@@ -500,6 +502,29 @@ fn thermal_parameter_equals_traction_contact() {
     .unwrap();
     let d = direct(&c, &on);
     assert_matches(&on, &d);
+    // The default T* = 1e6 K is the first-order law (mu_rise_scale None):
+    // ΔT²/T*² < 1e-7 at this rise, so μ and the forces agree to 1e-6.
+    let (_, first) = run(&reals[..4], &[], &[(vr::THERMAL, true)]).unwrap();
+    let c1 = traction_contact::TractionContact::new(
+        &b1,
+        &b2,
+        user_fluid(),
+        traction_contact::Options {
+            thermal: Some(traction_contact::Thermal {
+                mu_rise_scale: None,
+                ..thermal
+            }),
+            ..options(ep)
+        },
+    )
+    .unwrap();
+    let d1 = direct(&c1, &first);
+    let fy1 = first[out_index(vr::FY).unwrap()];
+    assert!(
+        (fy1 - d1.fy).abs() <= 1e-6 * d1.fy.abs(),
+        "{fy1} vs {}",
+        d1.fy
+    );
     let rise = on[out_index(vr::TEMPERATURE_RISE).unwrap()];
     assert!(rise > 1.0, "side slip and spin heat the film: {rise} K");
     assert!((rise - d.temperature_rise).abs() <= 1e-12 * rise);
@@ -532,6 +557,8 @@ fn thermal_parameter_equals_traction_contact() {
     assert!(e.message.contains("fluid_conductivity"), "{e}");
     let e = run(&[(vr::MU_TEMPERATURE_COEFFICIENT, 2.0)], &[], &on).unwrap_err();
     assert!(e.message.contains("mu_temperature_coefficient"), "{e}");
+    let e = run(&[(vr::MU_RISE_SCALE, 0.0)], &[], &on).unwrap_err();
+    assert!(e.message.contains("mu_rise_scale"), "{e}");
     // Thermal off: the thermal parameters are not used (not checked).
     assert!(run(&[(vr::FILM_THICKNESS, 0.0)], &[], &[]).is_ok());
     let e = run(&[], &[], &[(vr::THERMAL, true), (vr::SPIN_PEAK, true)]).unwrap_err();

@@ -207,6 +207,8 @@ pub mod vr {
     pub const MU_TEMPERATURE_COEFFICIENT: u32 = 22;
     /// `m_temperature_coefficient`.
     pub const M_TEMPERATURE_COEFFICIENT: u32 = 23;
+    /// `mu_rise_scale`.
+    pub const MU_RISE_SCALE: u32 = 24;
     // Real inputs 100..
     /// `normal_load`.
     pub const LOAD: u32 = 100;
@@ -484,7 +486,7 @@ mod tests {
                 N_ENUM_PARAMS,
                 N_BOOL_PARAMS
             ),
-            (23, 7, 27, 5, 4)
+            (24, 7, 27, 5, 4)
         );
         assert_eq!(N_ENUM_OUTPUTS, 1);
         // Every row has a slot, the slots of a class are 0..count in table order.

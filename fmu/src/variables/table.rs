@@ -294,6 +294,15 @@ pub const VARIABLES: &[Variable] = &[
         1.0,
         "Temperature coefficient beta_m = -d ln(m)/d theta of m_user (thermal = true, fluid = user), 1/K; the report fluids use their identified value; valid range [-1, 1]",
     ),
+    par_bounded(
+        "mu_rise_scale",
+        vr::MU_RISE_SCALE,
+        "TemperatureDifference",
+        1e6,
+        1e-3,
+        1e6,
+        "Temperature scale T* of the second-order term of mu_user's temperature law, mu(dT) = mu_user exp(-beta_mu (dT - dT_peak) - (dT^2 - dT_peak^2)/T*^2) (thermal = true, fluid = user), K; the default 1e6 K leaves the first-order law (the term changes mu by less than 4e-6 below the 2000 K runaway limit); the report fluids use their identified value; valid range [1e-3, 1e6]",
+    ),
     input(
         "normal_load",
         vr::LOAD,
