@@ -151,7 +151,9 @@ struct ViRig {
 /// 1.22 GPa is a test pressure of the k = 5 tests only, and the Appendix
 /// III-E listing gives test 790726-1 (20 m/s, 32.5 °C, 15°, 1.22 GPa, spin
 /// peak 0.084 as printed for the trace) ASPECT* = 0.51 (k = 5) and SPIN* =
-/// 0.59 (Z = 0.0092 = C''(k = 5, 15°)·1.22 GPa). The report's m = 53.5 and
+/// 0.59, Z = 0.0092 (k = 5: C''(k = 5, 15°)·1.22 GPa = 0.0086, App. III-E's
+/// 15° rows all lie 7 % above Table 2-5; k = 1: 0.0030; docs/decisions/0024).
+/// The report's m = 53.5 and
 /// μ = 0.083 are its slope and spin-peak correlations at k = 1 (53.51,
 /// 0.0834 at Z = 0); at k = 5 they give 43.29 and 0.0873, which the
 /// prediction takes (`correlated_inputs`). The printed theory (k = 1) is
@@ -212,6 +214,26 @@ fn vi_point(
     dv_u: f64,
     law: Option<[Law; 2]>,
 ) -> Result<f64, ReproduceError> {
+    Ok(appendix_vi_state(trace, positive, m, mu, speed, dv_u, law)?
+        .0
+        .traction_y)
+}
+
+/// The thermal prediction of one Appendix VI point as [`appendix_vi`] makes
+/// it: the contact's evaluation on the trace's rig (positive or negative
+/// rolling direction, side slip ratio `dv_u`, the printed `m`, `mu` unless
+/// the rig takes them from the correlations) and the spin group Z =
+/// ω√(ab)/U of that rig (tilt angle and offset of Table 2-4, Hertz contact at
+/// the printed P0).
+pub fn appendix_vi_state(
+    trace: &str,
+    positive: bool,
+    m: f64,
+    mu: f64,
+    speed: f64,
+    dv_u: f64,
+    law: Option<[Law; 2]>,
+) -> Result<(Evaluation, f64), ReproduceError> {
     let rig = vi_rig(trace)?;
     let (m, mu) = if rig.correlated_inputs {
         correlated_inputs(&rig, speed)?
@@ -221,11 +243,8 @@ fn vi_point(
     let w_per_u = tilted_disc_spin_per_speed(rig.tilt_deg.to_radians(), rig.ry, rig.offset)
         .map_err(|e| err("Appendix VI spin", e))?;
     let c = contact(&rig.bodies, rig.fluid, m, mu, law)?;
-    let load = c
-        .geometry()
-        .at_p0(rig.p0)
-        .map_err(|e| err("Hertz", e))?
-        .load;
+    let hz = c.geometry().at_p0(rig.p0).map_err(|e| err("Hertz", e))?;
+    let (load, z) = (hz.load, w_per_u * (hz.a * hz.b).sqrt());
     let sign = if positive { 1.0 } else { -1.0 };
     let e = evaluate(
         &c,
@@ -236,7 +255,7 @@ fn vi_point(
         sign * w_per_u * speed,
         rig.theta,
     )?;
-    Ok(e.traction_y)
+    Ok((e, z))
 }
 
 /// Appendix VI: thermal J5 = (Fy/Fz)/μ_spin per data row (the table's
