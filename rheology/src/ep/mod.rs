@@ -27,7 +27,9 @@
 //!   crossing of vy = 0) and graded from κ·h = 1/2 after yield, where the
 //!   lag of n behind v̂ relaxes within ~1/κ;
 //! * elastic unloading where g = (v·n)·cos s + (3/2)·sin s turns negative
-//!   (v·n < dL/dX), located by regula falsi inside the step.
+//!   (v·n < dL/dX), located inside the step on the integrated g (the root
+//!   of g's cubic Hermite interpolant over the step as the first trial
+//!   length, then Newton with the exact dg/ds, safeguarded by regula falsi).
 
 mod plastic;
 mod quadrature;
