@@ -7,6 +7,7 @@ use std::hint::black_box;
 use traction_rheology::{
     Accuracy, Inputs, Model, Resolution, closed, evaluate, map::Map, reference,
 };
+use traction_testkit::bench_cases::{ELASTIC_PLASTIC, VISCOELASTIC};
 
 fn benches(c: &mut Criterion) {
     c.bench_function("closed/slip_traction eq22", |b| {
@@ -26,23 +27,14 @@ fn benches(c: &mut Criterion) {
         ),
     ];
     // The bench set of the direct solver (the same cases as `cargo xtask
-    // prof CASE`, which counts instructions): moderate spin, the App. VI high
-    // spin trace, near the spin pole at small k, large k, and three
-    // intermediate spins.
-    let set = [
-        ("m moderate k=1 J=(1.5,0.3,2)", 1.0, 1.5, 0.3, 2.0),
-        ("h high-spin k=5 J=(0,3.37,25.8)", 5.0, 0.0, 3.368, 25.816),
-        ("p pole k=0.2 J=(0.11,0.08,0.70)", 0.2, 0.11, 0.08, 0.70),
-        ("s k=20 J=(0.5,2,40)", 20.0, 0.5, 2.0, 40.0),
-        ("a k=0.5 J=(2,-1,10)", 0.5, 2.0, -1.0, 10.0),
-        ("b k=2 J=(-1,3,15)", 2.0, -1.0, 3.0, 15.0),
-        ("c k=1 J=(0.2,0.1,5)", 1.0, 0.2, 0.1, 5.0),
-    ];
+    // prof CASE`, which counts instructions).
     let mut g = c.benchmark_group("elastic_plastic");
     g.sample_size(10);
-    for &(name, k, j1, j2, j3) in &set {
-        let inp = Inputs::new(k, j1, j2, j3).unwrap();
-        let tols: &[f64] = if name.starts_with('m') || name.starts_with('h') {
+    for case in &ELASTIC_PLASTIC {
+        let [j1, j2, j3] = case.j;
+        let inp = Inputs::new(case.k, j1, j2, j3).unwrap();
+        let name = case.label;
+        let tols: &[f64] = if matches!(case.letter, "m" | "h") {
             &[1e-2, 1e-3, 1e-4, 1e-5]
         } else {
             &[1e-3, 1e-4]
@@ -63,77 +55,17 @@ fn benches(c: &mut Criterion) {
     });
     g.finish();
 
-    // The viscoelastic model: the same cases as `cargo xtask prof-visco CASE`
-    // (k, J1, J2, J3, D, Z0, gy), and the former fixed-grid scheme at its
-    // former resolution for tol = 1e-3 (4 panels × 8 points, 633 steps).
-    let visco = [
-        (
-            "m k=1 J=(1.5,0.3,2) D=1 Z0=1",
-            1.0,
-            1.5,
-            0.3,
-            2.0,
-            1.0,
-            1.0,
-            1.0,
-        ),
-        (
-            "h k=5 J=(0,3.37,25.8) D=1 Z0=1",
-            5.0,
-            0.0,
-            3.368,
-            25.816,
-            1.0,
-            1.0,
-            1.0,
-        ),
-        (
-            "x Maxwell k=1 J=(1.5,0.3,2) D=0.3",
-            1.0,
-            1.5,
-            0.3,
-            2.0,
-            0.3,
-            f64::INFINITY,
-            1.0,
-        ),
-        (
-            "l k=1 J=(1.5,0.3,2) D=0.01 Z0=0.1",
-            1.0,
-            1.5,
-            0.3,
-            2.0,
-            0.01,
-            0.1,
-            1.0,
-        ),
-        (
-            "e k=1 J=(1.5,0.3,2) D=100 Z0=1",
-            1.0,
-            1.5,
-            0.3,
-            2.0,
-            100.0,
-            1.0,
-            1.0,
-        ),
-        (
-            "g k=0.5 J=(2,-1,10) D=1 Z0=0.5 gy=2",
-            0.5,
-            2.0,
-            -1.0,
-            10.0,
-            1.0,
-            0.5,
-            2.0,
-        ),
-    ];
+    // The viscoelastic model: the same cases as `cargo xtask prof-visco CASE`,
+    // and the former fixed-grid scheme at its former resolution for tol = 1e-3
+    // (4 panels × 8 points, 633 steps).
     let mut g = c.benchmark_group("viscoelastic");
     g.sample_size(10);
-    for &(name, k, j1, j2, j3, deborah, z0, gy) in &visco {
-        let inp = Inputs::new(k, j1, j2, j3)
+    for case in &VISCOELASTIC {
+        let [j1, j2, j3] = case.j;
+        let (name, deborah, z0) = (case.label, case.deborah, case.z0);
+        let inp = Inputs::new(case.k, j1, j2, j3)
             .unwrap()
-            .with_stiffness_ratio(gy)
+            .with_stiffness_ratio(case.gy)
             .unwrap();
         let model = Model::Viscoelastic { deborah, z0 };
         for tol in [1e-3, 1e-4] {
@@ -142,7 +74,7 @@ fn benches(c: &mut Criterion) {
                 b.iter(|| evaluate(black_box(&inp), model, a).unwrap())
             });
         }
-        if name.starts_with('m') || name.starts_with('h') {
+        if matches!(case.letter, "m" | "h") {
             let res = Resolution {
                 y_panels: 4,
                 y_points: 8,

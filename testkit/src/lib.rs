@@ -16,6 +16,8 @@
 //! replaced in the tests (checked below), so the random cases did not change.
 #![forbid(unsafe_code)]
 
+pub mod bench_cases;
+
 /// 2⁻⁵³: the top 53 bits of a `u64` as a fraction in [0, 1).
 const UNIT: f64 = 1.0 / (1u64 << 53) as f64;
 

@@ -6,20 +6,7 @@
 #![allow(clippy::unwrap_used)]
 use crate::arg;
 use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate, reference};
-
-/// A case: (letter, k, J1, J2, J3, D, Z0, gy).
-pub type Case = (&'static str, f64, f64, f64, f64, f64, f64, f64);
-
-/// The bench set, the same as the crate's criterion bench group
-/// `viscoelastic`.
-pub const CASES: [Case; 6] = [
-    ("m", 1.0, 1.5, 0.3, 2.0, 1.0, 1.0, 1.0),
-    ("h", 5.0, 0.0, 3.368, 25.816, 1.0, 1.0, 1.0),
-    ("x", 1.0, 1.5, 0.3, 2.0, 0.3, f64::INFINITY, 1.0),
-    ("l", 1.0, 1.5, 0.3, 2.0, 0.01, 0.1, 1.0),
-    ("e", 1.0, 1.5, 0.3, 2.0, 100.0, 1.0, 1.0),
-    ("g", 0.5, 2.0, -1.0, 10.0, 1.0, 0.5, 2.0),
-];
+use traction_testkit::bench_cases::VISCOELASTIC;
 
 /// Runs the driver with the command line's arguments after `prof-visco`.
 pub fn run(a: &[String]) -> Result<(), String> {
@@ -27,12 +14,13 @@ pub fn run(a: &[String]) -> Result<(), String> {
     let tol: f64 = arg(a, 1, "TOL", Some(1e-3))?;
     let reps: usize = arg(a, 2, "REPS", Some(1))?;
     let old = a.get(3).is_some_and(|s| s == "old");
-    let &(_, k, j1, j2, j3, deborah, z0, gy) = CASES
+    let c = VISCOELASTIC
         .iter()
-        .find(|c| c.0 == case)
+        .find(|c| c.letter == case)
         .ok_or_else(|| format!("unknown case `{case}`"))?;
-    let inp = Inputs::new(k, j1, j2, j3)
-        .and_then(|i| i.with_stiffness_ratio(gy))
+    let (deborah, z0) = (c.deborah, c.z0);
+    let inp = Inputs::new(c.k, c.j[0], c.j[1], c.j[2])
+        .and_then(|i| i.with_stiffness_ratio(c.gy))
         .map_err(|e| e.to_string())?;
     let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
     let lt = -tol.log10();
