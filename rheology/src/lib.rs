@@ -447,7 +447,7 @@ fn adaptive(
     if m > J_RIGID {
         return rigid_plastic(inp, Accuracy { tol: 1e-6 });
     }
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
+    let sc = ep::Scaled::of(inp);
     let h = s_step.clamp(1e-4, 0.5);
     let hs = s_step_smooth.clamp(h, 1.0);
     let (j4, j5, j6) = ep::solve_adaptive(&sc, n.clamp(2, quad::MAX_GL), tol, h, hs);
@@ -494,7 +494,7 @@ pub(crate) fn viscoelastic(
     if m > J_RIGID && law.psi_max() < 1e-9 * m {
         return rigid_plastic(inp, Accuracy { tol: 1e-6 });
     }
-    let (j4, j5, j6) = visco::solve(&visco::Params::new(inp), law, acc.tol);
+    let (j4, j5, j6) = visco::solve(&ep::Scaled::of(inp), law, acc.tol);
     Ok(finish(inp, j4, j5, j6))
 }
 

@@ -15,7 +15,7 @@ pub fn elastic_plastic(inp: &Inputs, res: &Resolution) -> Result<Outputs, Rheolo
     if m > crate::J_RIGID {
         return crate::rigid_plastic(inp, crate::Accuracy { tol: 1e-6 });
     }
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
+    let sc = ep::Scaled::of(inp);
     let (j4, j5, j6) = ep::solve(&sc, res);
     Ok(finish(inp, j4, j5, j6))
 }
@@ -26,7 +26,7 @@ pub fn elastic_plastic(inp: &Inputs, res: &Resolution) -> Result<Outputs, Rheolo
 /// strip integrator; used to cross-check it.
 pub fn grid(inp: &Inputs, props: Properties, cells: usize) -> Result<Outputs, RheologyError> {
     inp.validate()?;
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
+    let sc = ep::Scaled::of(inp);
     let (j4, j5, j6) = crate::props::solve(&sc, props, cells.clamp(10, 20000));
     Ok(finish(inp, j4, j5, j6))
 }
@@ -49,7 +49,7 @@ pub fn viscoelastic(
 ) -> Result<Outputs, RheologyError> {
     inp.validate()?;
     crate::check_viscoelastic(deborah, z0)?;
-    let sc = ep::Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy);
+    let sc = ep::Scaled::of(inp);
     let law = crate::visco::Law::new(z0, deborah);
     let (j4, j5, j6) = crate::visco::reference::solve(&sc, law, res, nsteps.clamp(1, 1_000_000));
     Ok(finish(inp, j4, j5, j6))

@@ -46,7 +46,10 @@
 //! though the step sequence along the strips still changes discretely with
 //! the inputs), starting from panels graded towards the spin pole's strip
 //! Y_p = J1/(√k·J3), where the flow pattern changes fastest, and no wider
-//! than 0.8 rad (a wider panel can pass the test by chance).
+//! than 0.8 rad (a wider panel can pass the test by chance). The adaptive
+//! rule and the graded edges are the elastic/plastic model's
+//! (`ep::adaptive_in_phi`, `ep::graded_breaks`) with this model's rule,
+//! grading and depth.
 //!
 //! max|J| > [`crate::J_RIGID`] with the largest viscous rate ψ(3/2) below
 //! 1e-9·max|J| returns the rigid/plastic solution (the stress is on the cap
@@ -57,6 +60,8 @@
 //! is kept in [`reference`] as the tests' independent reference.
 
 use std::f64::consts::{FRAC_PI_2, PI};
+
+use crate::ep::{MAX_BREAKS, Scaled, Strip, adaptive_in_phi, graded_breaks};
 
 /// Largest viscous rate ψ, μ used (the relaxation is then instantaneous at
 /// any step; keeps the 2 × 2 determinants finite).
@@ -127,46 +132,6 @@ impl Law {
     }
 }
 
-/// The scaled inputs (as the elastic/plastic model's): a0 = J1/√k,
-/// b1 = J2/√k + J3·ΔX/k, q2 = J3/k, and k, ΔX, gy.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Params {
-    pub a0: f64,
-    pub b1: f64,
-    pub j3: f64,
-    pub q2: f64,
-    pub k: f64,
-    pub dx: f64,
-    pub gy: f64,
-}
-
-impl Params {
-    pub(crate) fn new(inp: &crate::Inputs) -> Self {
-        let sk = inp.k.sqrt();
-        Params {
-            a0: inp.j1 / sk,
-            b1: inp.j2 / sk + inp.j3 * inp.dx / inp.k,
-            j3: inp.j3,
-            q2: inp.j3 / inp.k,
-            k: inp.k,
-            dx: inp.dx,
-            gy: inp.gy,
-        }
-    }
-
-    /// The strip at Y: elastic rate e = (a, b1 + q2·X) with gy applied.
-    fn strip(&self, y: f64, law: Law) -> VStrip {
-        VStrip {
-            c: (1.0 - y * y).max(0.0).sqrt(),
-            a: self.a0 - self.j3 * y,
-            b1: self.gy * self.b1,
-            q2: self.gy * self.q2,
-            gy: self.gy,
-            law,
-        }
-    }
-}
-
 /// One strip: half-width c, elastic rate e = (a, b1 + q2·X) (= G·v).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct VStrip {
@@ -176,6 +141,20 @@ pub(crate) struct VStrip {
     pub q2: f64,
     pub gy: f64,
     pub law: Law,
+}
+
+impl VStrip {
+    /// The elastic/plastic model's strip with the viscous law `law`.
+    fn new(st: Strip, law: Law) -> Self {
+        VStrip {
+            c: st.c,
+            a: st.a,
+            b1: st.b1,
+            q2: st.q2,
+            gy: st.gy,
+            law,
+        }
+    }
 }
 
 /// Right-hand side at one point: the state's rate and the three quadrature
@@ -881,34 +860,6 @@ const GL4: [(f64, f64); 4] = [
     (0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
 ];
 
-/// Sums (∫Zx, ∫Zy, ∫Zy·X, ∫Zx·Y over strips) of one φ-panel.
-fn panel_sums(lo: f64, hi: f64, strip_fn: &mut impl FnMut(f64) -> [f64; 3]) -> [f64; 4] {
-    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-    let mut acc = [0.0; 4];
-    for &(t, w) in &GL4 {
-        let (y, cphi) = (mid + half * t).sin_cos();
-        let wt = half * w * cphi;
-        let st = strip_fn(y);
-        acc[0] += wt * st[0];
-        acc[1] += wt * st[1];
-        acc[2] += wt * st[2];
-        acc[3] += wt * y * st[0];
-    }
-    acc
-}
-
-/// (J4, J5, J6) from the contact sums; J6 about the spin pole (crate docs).
-fn to_j(p: &Params, s: &[f64; 4]) -> (f64, f64, f64) {
-    (
-        s[0] / PI,
-        s[1] / PI,
-        (s[2] + p.dx * s[1] - p.k * s[3]) / (PI * p.k.sqrt()),
-    )
-}
-
-/// Blend between a panel's value and its refinement: from BLEND.0 to BLEND.1
-/// times the allowed change.
-const BLEND: (f64, f64) = (1.0, 2.0);
 /// Largest panel depth below the initial panels.
 const MAX_DEPTH: u32 = 12;
 /// First graded panel width from the spin pole's strip, in φ: POLE_GRADING/|J3|.
@@ -924,53 +875,24 @@ const W0_MIN: f64 = 0.01;
 /// 2.2·tol at tol = 1e-4 (J6). On 2 × 160 random cases 0.8 leaves a worst
 /// error/tol of 0.48 (1.0: 0.97; 0.6: 0.17 at 20 % more strips).
 const W_MAX: f64 = 0.8;
-/// Largest number of initial panel edges.
-const MAX_BREAKS: usize = 64;
-
-#[inline]
-fn smooth_step(t: f64) -> f64 {
-    let t = t.clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
-}
 
 /// Initial panel edges in φ graded geometrically towards the spin pole's
 /// strip (clamped to the contact's edge when outside), widths doubling
 /// outwards from POLE_GRADING/|J3|; the two halves for J3 = 0.
-fn initial_breaks(p: &Params, out: &mut [f64; MAX_BREAKS]) -> usize {
+fn initial_breaks(p: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
     let yp = p.a0 / p.j3;
     if !yp.is_finite() {
         out[..3].copy_from_slice(&[-FRAC_PI_2, 0.0, FRAC_PI_2]);
         return 3;
     }
     let pp = yp.clamp(-1.0, 1.0).asin();
-    let w0 = (POLE_GRADING / p.j3.abs()).max(W0_MIN);
-    let side = MAX_BREAKS / 2 - 2;
-    let mut n = 1;
-    let mut w = w0;
-    while pp - w > -FRAC_PI_2 + 0.5 * w && n <= side {
-        out[n] = pp - w;
-        n += 1;
-        w *= 2.0;
-    }
-    out[1..n].reverse();
-    out[0] = -FRAC_PI_2;
-    out[n] = pp;
-    n += 1;
-    let mut w = w0;
-    let lim = n + side;
-    while pp + w < FRAC_PI_2 - 0.5 * w && n < lim {
-        out[n] = pp + w;
-        n += 1;
-        w *= 2.0;
-    }
-    out[n] = FRAC_PI_2;
-    n + 1
+    graded_breaks(pp, (POLE_GRADING / p.j3.abs()).max(W0_MIN), 2.0, out)
 }
 
 /// Viscoelastic (J4, J5, J6) at the accuracy tol.
-pub(crate) fn solve(p: &Params, law: Law, tol: f64) -> (f64, f64, f64) {
+pub(crate) fn solve(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f64) {
     let atol = STRIP_TOL * tol;
-    let mut strip_fn = |y: f64| strip_sums(&p.strip(y, law), atol);
+    let strip_fn = |y: f64| strip_sums(&VStrip::new(p.strip(y), law), atol);
     let mut b0 = [0.0; MAX_BREAKS];
     let nb0 = initial_breaks(p, &mut b0);
     // Panels wider than W_MAX are split into equal parts (at most 4: the
@@ -985,46 +907,7 @@ pub(crate) fn solve(p: &Params, law: Law, tol: f64) -> (f64, f64, f64) {
             nb += 1;
         }
     }
-    let mut total = [0.0; 4];
-    let mut stack: Vec<(f64, f64, [f64; 4], u32, f64)> = Vec::with_capacity(32);
-    for w in breaks[..nb].windows(2) {
-        let (lo, hi) = (w[0], w[1]);
-        if hi > lo {
-            let v = panel_sums(lo, hi, &mut strip_fn);
-            stack.push((lo, hi, v, 0, 1.0));
-        }
-    }
-    while let Some((lo, hi, coarse, depth, weight)) = stack.pop() {
-        let m = 0.5 * (lo + hi);
-        let l = panel_sums(lo, m, &mut strip_fn);
-        let r = panel_sums(m, hi, &mut strip_fn);
-        let fine = [l[0] + r[0], l[1] + r[1], l[2] + r[2], l[3] + r[3]];
-        let d = [
-            fine[0] - coarse[0],
-            fine[1] - coarse[1],
-            fine[2] - coarse[2],
-            fine[3] - coarse[3],
-        ];
-        let (e4, e5, e6) = to_j(p, &d);
-        let err = e4.abs().max(e5.abs()).max(e6.abs());
-        let allowed = tol * (hi - lo) / PI;
-        let refine = if depth >= MAX_DEPTH || err.is_nan() {
-            0.0
-        } else {
-            smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
-        };
-        if refine < 1.0 {
-            let w = weight * (1.0 - refine);
-            for i in 0..4 {
-                total[i] += w * fine[i];
-            }
-        }
-        if refine > 0.0 {
-            stack.push((lo, m, l, depth + 1, weight * refine));
-            stack.push((m, hi, r, depth + 1, weight * refine));
-        }
-    }
-    to_j(p, &total)
+    adaptive_in_phi(&breaks[..nb], &GL4, tol, MAX_DEPTH, (p.k, p.dx), strip_fn)
 }
 
 pub(crate) mod reference;

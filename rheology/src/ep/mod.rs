@@ -36,8 +36,11 @@ mod quadrature;
 mod yield_point;
 
 pub(crate) use quadrature::{
-    contact_integral, contact_integral_adaptive_at, solve, solve_adaptive,
+    MAX_BREAKS, adaptive_in_phi, contact_integral, contact_integral_adaptive_at, graded_breaks,
+    solve, solve_adaptive,
 };
+#[cfg(test)]
+pub(crate) use quadrature::{panel_sums, to_j};
 
 /// Smallest cos s at which the anisotropic flow term (3/2)·tan s (= −dL/dX)
 /// is evaluated. Near the outlet the shrinking limit drives the stress
@@ -286,6 +289,11 @@ impl Scaled {
             dx,
             gy: 1.0,
         }
+    }
+
+    /// The scaled inputs of `inp` (its k, J1, J2, J3, ΔX and gy).
+    pub(crate) fn of(inp: &crate::Inputs) -> Self {
+        Scaled::new(inp.k, inp.j1, inp.j2, inp.j3, inp.dx).with_gy(inp.gy)
     }
 
     /// With the lateral-to-longitudinal stiffness ratio gy.

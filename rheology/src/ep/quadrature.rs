@@ -40,34 +40,35 @@ pub(crate) fn contact_integral(
     (j4, j5, j6)
 }
 
-/// Sums (∫Zx, ∫Zy, ∫Zy·X, ∫Zx·Y over strips) of one φ-panel by an n-point rule.
-fn panel_sums(
-    sc: &Scaled,
+/// Sums (∫Zx, ∫Zy, ∫Zy·X, ∫Zx·Y over strips) of one φ-panel by `rule`;
+/// `strip(Y)` gives a strip's (∫Zx, ∫Zy, ∫Zy·X).
+pub(crate) fn panel_sums(
+    rule: &[(f64, f64)],
     lo: f64,
     hi: f64,
-    n: usize,
-    strip_fn: &mut impl FnMut(&Strip) -> StripSums,
+    strip: &mut impl FnMut(f64) -> [f64; 3],
 ) -> [f64; 4] {
-    let rule = quad::rule(n);
     let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
     let mut acc = [0.0; 4];
     for &(t, w) in rule {
         let (y, cphi) = (mid + half * t).sin_cos();
         let wt = half * w * cphi;
-        let st = strip_fn(&sc.strip(y));
-        acc[0] += wt * st.ix;
-        acc[1] += wt * st.iy;
-        acc[2] += wt * st.ixy;
-        acc[3] += wt * y * st.ix;
+        let st = strip(y);
+        acc[0] += wt * st[0];
+        acc[1] += wt * st[1];
+        acc[2] += wt * st[2];
+        acc[3] += wt * y * st[0];
     }
     acc
 }
 
-fn to_j(sc: &Scaled, s: &[f64; 4]) -> (f64, f64, f64) {
+/// (J4, J5, J6) from the contact sums of a contact of aspect ratio `k` with
+/// spin-pole offset `dx` (see [`contact_integral`]).
+pub(crate) fn to_j(k: f64, dx: f64, s: &[f64; 4]) -> (f64, f64, f64) {
     (
         s[0] / PI,
         s[1] / PI,
-        (s[2] + sc.dx * s[1] - sc.k * s[3]) / (PI * sc.k.sqrt()),
+        (s[2] + dx * s[1] - k * s[3]) / (PI * k.sqrt()),
     )
 }
 
@@ -85,20 +86,37 @@ pub(crate) fn contact_integral_adaptive_at(
     max_depth: u32,
     mut strip_fn: impl FnMut(&Strip) -> StripSums,
 ) -> (f64, f64, f64) {
+    adaptive_in_phi(breaks, quad::rule(n), tol, max_depth, (sc.k, sc.dx), |y| {
+        let st = strip_fn(&sc.strip(y));
+        [st.ix, st.iy, st.ixy]
+    })
+}
+
+/// [`contact_integral_adaptive_at`] for any strip functional `strip(Y)` →
+/// (∫Zx, ∫Zy, ∫Zy·X) and panel rule `rule`, on a contact of aspect ratio k
+/// with spin-pole offset ΔX (`k_dx`); also the viscoelastic model's.
+pub(crate) fn adaptive_in_phi(
+    breaks: &[f64],
+    rule: &[(f64, f64)],
+    tol: f64,
+    max_depth: u32,
+    (k, dx): (f64, f64),
+    mut strip: impl FnMut(f64) -> [f64; 3],
+) -> (f64, f64, f64) {
     let mut total = [0.0; 4];
     // (lo, hi, value, depth, weight)
     let mut stack: Vec<(f64, f64, [f64; 4], u32, f64)> = Vec::with_capacity(32);
     for w in breaks.windows(2) {
         let (lo, hi) = (w[0], w[1]);
         if hi > lo {
-            let v = panel_sums(sc, lo, hi, n, &mut strip_fn);
+            let v = panel_sums(rule, lo, hi, &mut strip);
             stack.push((lo, hi, v, 0, 1.0));
         }
     }
     while let Some((lo, hi, coarse, depth, weight)) = stack.pop() {
         let m = 0.5 * (lo + hi);
-        let l = panel_sums(sc, lo, m, n, &mut strip_fn);
-        let r = panel_sums(sc, m, hi, n, &mut strip_fn);
+        let l = panel_sums(rule, lo, m, &mut strip);
+        let r = panel_sums(rule, m, hi, &mut strip);
         let fine = [l[0] + r[0], l[1] + r[1], l[2] + r[2], l[3] + r[3]];
         let d = [
             fine[0] - coarse[0],
@@ -106,7 +124,7 @@ pub(crate) fn contact_integral_adaptive_at(
             fine[2] - coarse[2],
             fine[3] - coarse[3],
         ];
-        let (e4, e5, e6) = to_j(sc, &d);
+        let (e4, e5, e6) = to_j(k, dx, &d);
         let err = e4.abs().max(e5.abs()).max(e6.abs());
         let allowed = tol * (hi - lo) / PI;
         // Share of the refined value: 0 up to BLEND.0·allowed, 1 from
@@ -129,7 +147,7 @@ pub(crate) fn contact_integral_adaptive_at(
             stack.push((m, hi, r, depth + 1, weight * refine));
         }
     }
-    to_j(sc, &total)
+    to_j(k, dx, &total)
 }
 
 /// Blend between a panel's value and its refinement: from BLEND.0 to BLEND.1
@@ -170,7 +188,7 @@ const POLE_GRADING_GROWTH: f64 = 4.0;
 /// edges per side (they reach the contact's edge for any |J3| below
 /// [`crate::J_RIGID`]; otherwise the outermost panel would be wider and
 /// refined by the adaptive rule).
-const MAX_BREAKS: usize = 64;
+pub(crate) const MAX_BREAKS: usize = 64;
 
 /// Initial panel edges in φ (Y = sin φ): graded geometrically towards the
 /// spin pole's strip Y_p = J1/(√k·J3), where the slip's X component
@@ -197,7 +215,15 @@ fn initial_breaks(sc: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
     // (small |J3|) this is one panel from edge to edge, whose first
     // refinement is the two halves (an empty panel at the edge is skipped).
     let pp = yp.clamp(-1.0, 1.0).asin();
-    let w0 = POLE_GRADING / sc.j3.abs();
+    graded_breaks(pp, POLE_GRADING / sc.j3.abs(), POLE_GRADING_GROWTH, out)
+}
+
+/// Panel edges in φ from −π/2 to π/2 graded geometrically about φ = `pp`
+/// (the spin pole's strip, clamped to the contact): edges at pp ± w0,
+/// pp ± w0·growth, pp ± w0·growth², … while a panel of at least half the last width is
+/// left to the contact's edge, at most MAX_BREAKS/2 − 2 per side. Returns the
+/// number of edges written to `out`.
+pub(crate) fn graded_breaks(pp: f64, w0: f64, growth: f64, out: &mut [f64; MAX_BREAKS]) -> usize {
     let side = MAX_BREAKS / 2 - 2;
     // Below the pole (filled from the pole outwards, then reversed).
     let mut n = 1;
@@ -205,7 +231,7 @@ fn initial_breaks(sc: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
     while pp - w > -FRAC_PI_2 + 0.5 * w && n <= side {
         out[n] = pp - w;
         n += 1;
-        w *= POLE_GRADING_GROWTH;
+        w *= growth;
     }
     out[1..n].reverse();
     out[0] = -FRAC_PI_2;
@@ -216,7 +242,7 @@ fn initial_breaks(sc: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
     while pp + w < FRAC_PI_2 - 0.5 * w && n < lim {
         out[n] = pp + w;
         n += 1;
-        w *= POLE_GRADING_GROWTH;
+        w *= growth;
     }
     out[n] = FRAC_PI_2;
     n + 1

@@ -137,23 +137,18 @@ pub(crate) fn maxwell_strip(st: &super::VStrip) -> [f64; 3] {
 /// panels of an exact strip functional.
 #[cfg(test)]
 pub(crate) fn contact_exact(
-    p: &super::Params,
+    p: &crate::ep::Scaled,
     panels: usize,
     mut f: impl FnMut(f64) -> [f64; 3],
 ) -> (f64, f64, f64) {
     let width = PI / panels as f64;
     let mut s = [0.0; 4];
     for i in 0..panels {
-        let mid = -FRAC_PI_2 + (i as f64 + 0.5) * width;
-        for &(t, w) in &super::GL4 {
-            let (y, cphi) = (mid + 0.5 * width * t).sin_cos();
-            let wt = 0.5 * width * w * cphi;
-            let v = f(y);
-            s[0] += wt * v[0];
-            s[1] += wt * v[1];
-            s[2] += wt * v[2];
-            s[3] += wt * y * v[0];
+        let lo = -FRAC_PI_2 + i as f64 * width;
+        let v = crate::ep::panel_sums(&super::GL4, lo, lo + width, &mut f);
+        for (a, b) in s.iter_mut().zip(v) {
+            *a += b;
         }
     }
-    super::to_j(p, &s)
+    crate::ep::to_j(p.k, p.dx, &s)
 }

@@ -67,10 +67,14 @@ fn maxwell_contact_at_zero_spin_is_exact() {
         (2.0, -2.0, 0.5, 0.3),
     ] {
         let inp = Inputs::new(k, j1, j2, 0.0).unwrap();
-        let p = Params::new(&inp);
+        let p = Scaled::of(&inp);
         let law = Law::new(f64::INFINITY, d);
-        let r = reference::contact_exact(&p, 64, |y| reference::maxwell_strip(&p.strip(y, law)));
-        let r2 = reference::contact_exact(&p, 128, |y| reference::maxwell_strip(&p.strip(y, law)));
+        let r = reference::contact_exact(&p, 64, |y| {
+            reference::maxwell_strip(&VStrip::new(p.strip(y), law))
+        });
+        let r2 = reference::contact_exact(&p, 128, |y| {
+            reference::maxwell_strip(&VStrip::new(p.strip(y), law))
+        });
         assert!(max_dev(r, r2) < 1e-10, "{r:?} {r2:?}");
         for tol in [1e-3, 1e-4] {
             let v = solve(&p, law, tol);
@@ -152,7 +156,7 @@ fn matches_the_former_scheme_refined() {
             .with_stiffness_ratio(gy)
             .unwrap();
         let r = former(&inp, d, z0, panels, 2000);
-        let p = Params::new(&inp);
+        let p = Scaled::of(&inp);
         let law = Law::new(z0, d);
         for tol in [1e-3, 1e-4] {
             let v = solve(&p, law, tol);
@@ -210,7 +214,7 @@ fn large_deborah_is_the_elastic_plastic_model() {
         )
         .unwrap();
         for tol in [1e-3, 1e-4] {
-            let v = solve(&Params::new(&inp), Law::new(1.0, 1e6), tol);
+            let v = solve(&Scaled::of(&inp), Law::new(1.0, 1e6), tol);
             let e = max_dev(v, (ep.j4, ep.j5, ep.j6));
             assert!(
                 e <= tol + 1e-5,
@@ -260,7 +264,7 @@ fn random_scan_against_a_tight_tolerance() {
             .unwrap()
             .with_stiffness_ratio(gy)
             .unwrap();
-        let p = Params::new(&inp);
+        let p = Scaled::of(&inp);
         let law = Law::new(z0, d);
         let r = solve(&p, law, 1e-8);
         for (i, tol) in [1e-3, 1e-4].into_iter().enumerate() {
