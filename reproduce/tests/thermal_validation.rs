@@ -211,11 +211,13 @@ fn santotrac_rise_scale_is_the_identified_minimum_and_the_first_order_law_is_not
         let l = thermal::Law {
             mu_coefficient: b,
             mu_rise_scale: t,
+            slope_coefficient: 0.0,
         };
         // TDF-88 at its own identified value.
         let tdf = thermal::Law {
             mu_coefficient: 0.0,
             mu_rise_scale: 575.0,
+            slope_coefficient: 0.0,
         };
         Some([l, tdf])
     };
@@ -230,6 +232,49 @@ fn santotrac_rise_scale_is_the_identified_minimum_and_the_first_order_law_is_not
         assert_eq!(t > 0.06, trace_above, "{b}: {t}");
         assert_eq!(a <= 0.0138, vii_a_within, "{b}: {a}");
     }
+}
+
+/// The data do not support a temperature coefficient of the slope m (β_m,
+/// docs/decisions/0025): on both 80 m/s spin traces, the only data heated
+/// well beyond their reference peak at small slip, any β_m > 0 makes the
+/// prediction worse (β_m = 0.0005 / 0.001 / 0.002 1/K: 79072704 0.056 /
+/// 0.069 / 0.097, 79100403 0.127 / 0.129 / 0.133, against 0.044 and 0.126
+/// with β_m = 0); a negative one would be unphysical (a fluid's shear
+/// modulus falls with temperature).
+#[test]
+fn a_temperature_coefficient_of_the_slope_makes_the_spin_traces_worse() {
+    let law = |beta_m: f64| {
+        Some([
+            thermal::Law {
+                mu_coefficient: 0.0,
+                mu_rise_scale: 480.0,
+                slope_coefficient: beta_m,
+            },
+            thermal::Law {
+                mu_coefficient: 0.0,
+                mu_rise_scale: 575.0,
+                slope_coefficient: beta_m,
+            },
+        ])
+    };
+    let mut last = [0.0; 2];
+    for (i, b) in [0.0, 0.0005, 0.001, 0.002].into_iter().enumerate() {
+        let now = [
+            vi_trace_rms(law(b), "79072704"),
+            vi_trace_rms(law(b), "79100403"),
+        ];
+        println!("β_m = {b}: 79072704 {:.4}, 79100403 {:.4}", now[0], now[1]);
+        if i > 0 {
+            assert!(
+                now[0] > last[0] && now[1] > last[1],
+                "{b}: {now:?} {last:?}"
+            );
+        }
+        last = now;
+    }
+    // β_m = 0.002 1/K (a 40 % softer film at 250 K) leaves 79072704 at
+    // more than twice its RMS with β_m = 0.
+    assert!(last[0] > 0.09, "{last:?}");
 }
 
 /// Inputs of the Appendix VI predictions against the report
