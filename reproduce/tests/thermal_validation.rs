@@ -80,6 +80,49 @@ fn thermal_predictions_against_the_measurements() {
     assert!(ri < 0.0167 * 1.05, "{ri}");
 }
 
+/// Appendix VII-B (longitudinal traces with side slip, low-speed machine,
+/// 20 m/s, no spin; a prediction) per aspect ratio, RMS of J4 = (Fx/N)/μ
+/// isothermal / thermal: k = 1, 2, 5 (131 points) 0.0585 / 0.0471 — the
+/// heating brings down the high-side-slip sets D the report calls thermal
+/// (k = 1 0.078 → 0.031, k = 2 0.104 → 0.073) — while k = 0.5 (44 points)
+/// is missed by both, 0.194 / 0.218: its measured Fx/N reaches 1.29 μ of
+/// the set (0.12 against the side-slip tests' μ = 0.0935, already at
+/// J2 = 0.15), above what any model bounded by that μ can give. Margin 5 %.
+#[test]
+fn appendix_vii_b_per_aspect_ratio() {
+    use traction_reproduce::data::{APPENDIX_VII_B, DataTable};
+    let t = DataTable::parse("appendix_vii_b_combined_slip.csv", APPENDIX_VII_B).unwrap();
+    let isothermal = thermal::appendix_vii_b(Some(
+        [thermal::Law {
+            mu_coefficient: 0.0,
+            mu_rise_scale: 1e12,
+            slope_coefficient: 0.0,
+        }; 2],
+    ))
+    .unwrap();
+    let heated = thermal::appendix_vii_b(None).unwrap();
+    let (ck, cj4) = (t.col("k").unwrap(), t.col("J4_act").unwrap());
+    let split = |keep: &dyn Fn(f64) -> bool| {
+        let idx: Vec<usize> = (0..t.rows.len())
+            .filter(|&i| keep(t.num(i, ck).unwrap()))
+            .collect();
+        let pick = |v: &[f64]| idx.iter().map(|&i| v[i]).collect::<Vec<_>>();
+        let meas: Vec<f64> = idx.iter().map(|&i| t.num(i, cj4).unwrap()).collect();
+        let peak = meas.iter().cloned().fold(0.0, f64::max);
+        (
+            rms(&pick(&isothermal), &meas),
+            rms(&pick(&heated), &meas),
+            peak,
+        )
+    };
+    let (iso, th, _) = split(&|k| k >= 1.0);
+    println!("VII-B k ≥ 1: isothermal {iso:.4}, thermal {th:.4}");
+    assert!(th < 0.0471 * 1.05 && th < iso, "{th} {iso}");
+    let (iso, th, peak) = split(&|k| k < 1.0);
+    println!("VII-B k = 0.5: isothermal {iso:.4}, thermal {th:.4}, measured J4 up to {peak:.3}");
+    assert!(peak > 1.25 && iso > 0.15, "{peak} {iso}");
+}
+
 /// Appendix VII-E: the peak traction coefficient falls with side slip (by up
 /// to 30 % at 2 %); the isothermal J+T peak does not (it is μ at every side
 /// slip), the thermal contact follows it. Relative to the zero-spin,
