@@ -2,10 +2,10 @@
 //! the RMS deviations (J units, the tables' own normalisation) with one
 //! parameter set per fluid (`fluids/data/thermal_properties.csv`).
 //!
-//! Identification (μ(ΔT) = μ e^(−β_μ (ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*²),
-//! docs/decisions/0023 and 0026): Santotrac 50's T* = 480 K (β_μ = 0) on
-//! trace 79072704 (both directions) alone; TDF-88's β_μ = 0.0008 1/K (no T*)
-//! jointly on trace 79100403 (80 m/s) and the TDF-88 peaks of Appendix VII-E. All other traces are predictions (among them
+//! Identification (μ(ΔT) = μ e^(−(ΔT² − ΔT_peak²)/T*²), docs/decisions/0023):
+//! Santotrac 50's T* = 480 K on trace 79072704 (both directions) alone;
+//! TDF-88's T* = 575 K jointly on trace 79100403 (80 m/s) and the TDF-88
+//! peaks of Appendix VII-E. All other traces are predictions (among them
 //! Appendix I, VII-A, VII-B and the 64 Santotrac 50 peaks of Appendix VII-E).
 //! Margins: 5 % of each measured value (the figures change only when the
 //! model or its data change; 5 % leaves room for the rheology's accuracy,
@@ -59,9 +59,9 @@ fn thermal_predictions_against_the_measurements() {
     assert!(t < 0.1361 * 1.05, "79072601 thermal RMS {t}");
     let all = rms(&pred, &meas);
     println!("Appendix VI all traces: thermal {all:.4}");
-    // Measured 0.0984 (spin-peak 0.182; the goal of halving it, 0.091, is
+    // Measured 0.0994 (spin-peak 0.182; the goal of halving it, 0.091, is
     // not met: 79100403 and 79072601 hold it, contact README).
-    assert!(all < 0.0984 * 1.05, "{all}");
+    assert!(all < 0.0994 * 1.05, "{all}");
     let a = DataTable::parse("appendix_vii_a_side_slip.csv", APPENDIX_VII_A).unwrap();
     let ma: Vec<f64> = (0..a.rows.len())
         .map(|i| a.num(i, a.col("J5_act").unwrap()).unwrap())
@@ -128,16 +128,16 @@ fn appendix_vii_b_per_aspect_ratio() {
 /// slip), the thermal contact follows it. Relative to the zero-spin,
 /// zero-side-slip μ of the same fluid, P0, k; measured RMS (isothermal /
 /// thermal): Santotrac 50 (a prediction: its T* comes from 79072704)
-/// 0.125 / 0.060 without spin, 0.143 / 0.082 with 6° spin; TDF-88 (its β_μ
-/// identified on these and 79100403) 0.134 / 0.058, 0.110 / 0.052. Margin 5 %.
+/// 0.125 / 0.060 without spin, 0.143 / 0.082 with 6° spin; TDF-88 (its T*
+/// identified on these and 79100403) 0.134 / 0.074, 0.110 / 0.060. Margin 5 %.
 #[test]
 fn appendix_vii_e_peaks_fall_with_side_slip() {
     let peaks = thermal::appendix_vii_e(None).unwrap();
     for (fluid, spin, iso_rms, thermal_rms) in [
         ("Santotrac", false, 0.1251, 0.0604),
         ("Santotrac", true, 0.1430, 0.0815),
-        ("TDF", false, 0.1336, 0.0582),
-        ("TDF", true, 0.1102, 0.0516),
+        ("TDF", false, 0.1336, 0.0740),
+        ("TDF", true, 0.1102, 0.0602),
     ] {
         let sel: Vec<_> = peaks
             .iter()
@@ -256,10 +256,10 @@ fn santotrac_rise_scale_is_the_identified_minimum_and_the_first_order_law_is_not
             mu_rise_scale: t,
             slope_coefficient: 0.0,
         };
-        // TDF-88 at its own identified law.
+        // TDF-88 at its own identified value.
         let tdf = thermal::Law {
-            mu_coefficient: 0.0008,
-            mu_rise_scale: f64::INFINITY,
+            mu_coefficient: 0.0,
+            mu_rise_scale: 575.0,
             slope_coefficient: 0.0,
         };
         Some([l, tdf])
@@ -281,7 +281,7 @@ fn santotrac_rise_scale_is_the_identified_minimum_and_the_first_order_law_is_not
 /// docs/decisions/0025): on both 80 m/s spin traces, the only data heated
 /// well beyond their reference peak at small slip, any β_m > 0 makes the
 /// prediction worse (β_m = 0.0005 / 0.001 / 0.002 1/K: 79072704 0.056 /
-/// 0.069 / 0.097, 79100403 0.122 / 0.124 / 0.128, against 0.044 and 0.120
+/// 0.069 / 0.097, 79100403 0.127 / 0.129 / 0.133, against 0.044 and 0.126
 /// with β_m = 0); a negative one would be unphysical (a fluid's shear
 /// modulus falls with temperature).
 #[test]
@@ -294,8 +294,8 @@ fn a_temperature_coefficient_of_the_slope_makes_the_spin_traces_worse() {
                 slope_coefficient: beta_m,
             },
             thermal::Law {
-                mu_coefficient: 0.0008,
-                mu_rise_scale: f64::INFINITY,
+                mu_coefficient: 0.0,
+                mu_rise_scale: 575.0,
                 slope_coefficient: beta_m,
             },
         ])
@@ -350,5 +350,70 @@ fn appendix_vi_inputs_free_rolling_and_spin() {
             );
             assert!((z / z_printed - 1.0).abs() < 0.025, "{trace}: Z {z}");
         }
+    }
+}
+
+/// TDF-88 keeps the second-order law although the first-order one fits its
+/// identification data better (β_μ = 0.0008 1/K, T* = ∞: joint RMS 0.0766
+/// against 0.0852 on trace 79100403 and its VII-E peaks; docs/decisions/
+/// 0026): under a constant coefficient the limiting stress survives any
+/// temperature, so states of gross sliding have no fixed point below the
+/// 2000 K runaway limit (61 of 300 random states from 20 to 120 m/s, up to
+/// 50 % slip; 1 of 300 with T* = 575 K, 1 of 300 for Santotrac 50's
+/// 480 K). Here three such states: the identified law converges, the
+/// first-order one runs away.
+#[test]
+fn the_second_order_law_bounds_the_rise_where_the_first_order_law_runs_away() {
+    use traction_contact::{
+        Body, ContactError, EnvelopeRule, Fluid, OperatingState, Options, Thermal, TractionContact,
+    };
+    // (ry1, load N, U m/s, ΔU m/s, ω rad/s, θ °C, m, μ) on the low-speed
+    // machine's discs of Table 2-1 (k = 1, 2, 5).
+    let states = [
+        (12.5e-3, 10000.0, 50.0, 25.0, 250.0, 70.0, 34.04, 0.080),
+        (36.5e-3, 500.0, 80.0, 40.0, 400.0, 70.0, 42.37, 0.080),
+        (150.4e-3, 2000.0, 120.0, 60.0, 2400.0, 30.0, 20.52, 0.053),
+    ];
+    let first_order = Thermal {
+        mu_coefficient: Some(0.0008),
+        mu_rise_scale: Some(f64::INFINITY),
+        ..Thermal::default()
+    };
+    for (ry, load, u, du, w, theta, m, mu) in states {
+        let eval = |th: Thermal| {
+            let fluid = Fluid::tdf_88(EnvelopeRule::Clamp)
+                .and_then(|f| f.with_inlet_values(m, mu))
+                .unwrap();
+            let opts = Options {
+                thermal: Some(th),
+                ..Options::default()
+            };
+            let c = TractionContact::new(
+                &Body::steel(25e-3, ry),
+                &Body::steel(25e-3, f64::INFINITY),
+                fluid,
+                opts,
+            )
+            .unwrap();
+            let s = OperatingState::builder()
+                .load(load)
+                .rolling_speed(u)
+                .slip(du)
+                .spin(w)
+                .inlet_temperature_celsius(theta)
+                .build()
+                .unwrap();
+            c.evaluate(&s)
+        };
+        let identified = eval(Thermal::default()).unwrap();
+        println!(
+            "ry {ry}: rise {:.0} K with T* = 575 K",
+            identified.temperature_rise
+        );
+        assert!(identified.temperature_rise < 1500.0);
+        assert!(matches!(
+            eval(first_order),
+            Err(ContactError::Thermal { .. })
+        ));
     }
 }
