@@ -36,6 +36,7 @@
 //!   length, then Newton with the exact dg/ds, safeguarded by regula falsi).
 
 mod plastic;
+use plastic::ETD_MIN_STEP;
 mod quadrature;
 mod yield_point;
 

@@ -60,7 +60,7 @@ const ETD_KAPPA_VARIATION: f64 = 0.5;
 /// step costs ≈ 2.3 RK4 steps (≈ 465 instructions with its exp), so
 /// shorter ones do not pay (down to 1 s-step: case b +25 % instructions at
 /// tol 1e-3).
-const ETD_MIN_STEP: f64 = 2.5;
+pub(super) const ETD_MIN_STEP: f64 = 2.5;
 
 /// Largest number of RK4 sub-steps per step before the quasi-steady branch
 /// (isotropic stiffness: κ·h > 2·MAX_SUB, where the lag α'/κ of the stress

@@ -3,7 +3,7 @@
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use super::{Resolution, Scaled, Strip, StripSums};
+use super::{ETD_MIN_STEP, Resolution, Scaled, Strip, StripSums};
 use crate::quad;
 
 /// Composite Gauss–Legendre over Y = sin φ of a strip functional; returns
@@ -274,6 +274,12 @@ pub(crate) fn solve_adaptive(
     let mut breaks = [0.0; MAX_BREAKS];
     let nb = initial_breaks(sc, &mut breaks);
     let etd_step = (ETD_STEP * (tol / 1e-3).sqrt()).min(ETD_STEP_MAX);
+    // None shorter than ETD_MIN_STEP s-steps (below tol ≈ 1.5e-4).
+    let etd_step = if etd_step >= ETD_MIN_STEP * s_step {
+        etd_step
+    } else {
+        0.0
+    };
     let strip = |s: &Strip| s.integrate_etd(s_step, s_step_smooth, etd_step);
     if sc.a0 == 0.0
         && let Some(i0) = breaks[..nb].iter().position(|&b| b == 0.0)
