@@ -212,7 +212,13 @@ impl Strip {
         let (k0, b0, ux0, uy0) = node(p.sn, p.cs);
         let (km, bm, uxm, uym) = node(sm, cm);
         let (k1, b1, ux1, uy1) = node(s1, c1);
-        if !(k0 > 0.0 && km > 0.0 && k1 > 0.0) {
+        // v ≠ 0 at the nodes, and the slip direction turning by less than
+        // π/2 between them (t is measured from it; a segment qualifies only
+        // where it turns slowly, so this is a guard).
+        if !(k0 > 0.0 && km > 0.0 && k1 > 0.0)
+            || ux0 * uxm + uy0 * uym <= 0.0
+            || uxm * ux1 + uym * uy1 <= 0.0
+        {
             return None;
         }
         let cphi = ux0 * p.nx + uy0 * p.ny;
