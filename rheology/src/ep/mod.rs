@@ -36,9 +36,10 @@
 //!   length, then Newton with the exact dg/ds, safeguarded by regula falsi).
 
 mod plastic;
-use plastic::ETD_MIN_STEP;
 mod quadrature;
 mod yield_point;
+
+use plastic::ETD_MIN_STEP;
 
 pub(crate) use quadrature::{
     MAX_BREAKS, adaptive_in_phi, contact_integral, contact_integral_adaptive_at, graded_breaks,
@@ -218,9 +219,9 @@ impl Strip {
         self.integrate_rec(s_step, s_step_smooth, &mut |_| {})
     }
 
-    /// [`Strip::integrate`] with exponential steps of length about
-    /// `etd_step` on the plastic segments where the slip direction turns
-    /// slowly (see `Strip::plastic`); RK4 as in [`Strip::integrate`]
+    /// [`Strip::integrate`] with exponential steps of at most `etd_step`
+    /// on the stiff isotropic plastic segments where the slip direction
+    /// turns slowly (see `Strip::plastic`); RK4 as in [`Strip::integrate`]
     /// elsewhere.
     pub(crate) fn integrate_etd(
         &self,
