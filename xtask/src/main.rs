@@ -2,12 +2,15 @@
 //!
 //! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
 //! - `prof-visco CASE TOL REPS [old]`: the same for the viscoelastic benches;
+//! - `ep-sets refs|errs FILE`, `ep-sets bits [TOL]`: the elastic/plastic
+//!   solver against 128-panel references on 307 cases, and its results' bits;
 //! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
 //!   random points.
 //!
 //! These are not user examples: they measure the implementation.
 #![forbid(unsafe_code)]
 
+mod ep_sets;
 mod map_check;
 mod prof;
 mod prof_visco;
@@ -19,12 +22,17 @@ commands:
   prof-visco [CASE [TOL [REPS [old]]]]
                                   the same for the viscoelastic model: CASE m h x l e g
                                   (prof_visco.rs); `old` = the former fixed-grid scheme
+  ep-sets refs FILE | errs FILE | bits [TOL]
+                                  elastic/plastic solver on 307 cases (ep_sets.rs): write
+                                  128-panel references, worst error/tol per set against
+                                  them, or the results' bit patterns
   map-check K TOL N RLOG [DX GY]  rheology map against evaluate at TOL/100 on N random
                                   points, |J| log-uniform in [0.1, 10^(RLOG-1)]";
 
 fn main() -> std::process::ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
+        Some("ep-sets") => ep_sets::run(&args[1..]),
         Some("prof") => prof::run(&args[1..]),
         Some("prof-visco") => prof_visco::run(&args[1..]),
         Some("map-check") => map_check::run(&args[1..]),

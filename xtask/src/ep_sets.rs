@@ -1,0 +1,141 @@
+//! Accuracy and bit-identity sets of the direct elastic/plastic solver:
+//! `ep-sets refs FILE` writes 128-panel (8 points), h = 0.004 references
+//! (`reference::elastic_plastic`, plain RK4) of the 307 cases below (≈ 15 s);
+//! `ep-sets errs FILE` prints `evaluate`'s worst error/tol against them per
+//! set at tol 1e-2, 1e-3, 1e-4; `ep-sets bits [TOL]` prints the results' bit
+//! patterns (compare two builds with `cmp` for bit-identical changes).
+//!
+//! The cases: the bench set (7), 160 high-spin ones (k ∈ {0.5, 1, 2, 5},
+//! |J1|, |J2| ≤ 5, J3 ∈ [5, 26]), 80 wide-range ones (k 0.05–20, |J1|
+//! 0.1–32, |J2| 0.03–3, |J3| 0.3–316 log-uniform with random signs, every
+//! third with gy 0.3–3) and 60 others (k 0.2–5, |J1|, |J2| ≤ 3,
+//! |J3| ∈ [0.5, 26]), from a fixed seed.
+#![allow(clippy::unwrap_used)]
+use traction_rheology::reference::elastic_plastic;
+use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate};
+use traction_testkit::Lcg;
+use traction_testkit::bench_cases::ELASTIC_PLASTIC;
+
+/// The sets: (name, first case, end).
+const SETS: [(&str, usize, usize); 4] = [
+    ("bench", 0, 7),
+    ("high spin", 7, 167),
+    ("wide range", 167, 247),
+    ("others", 247, 307),
+];
+
+const TOLS: [f64; 3] = [1e-2, 1e-3, 1e-4];
+
+fn cases() -> Vec<Inputs> {
+    let mut v: Vec<Inputs> = ELASTIC_PLASTIC
+        .iter()
+        .map(|c| Inputs::new(c.k, c.j[0], c.j[1], c.j[2]).unwrap())
+        .collect();
+    let mut r = Lcg::new(4242);
+    let sign = |r: &mut Lcg| if r.unit() < 0.5 { -1.0 } else { 1.0 };
+    for _ in 0..160 {
+        let k = [0.5, 1.0, 2.0, 5.0][(r.unit() * 4.0) as usize % 4];
+        let j1 = (2.0 * r.unit() - 1.0) * 5.0;
+        let j2 = (2.0 * r.unit() - 1.0) * 5.0;
+        let j3 = 5.0 + 21.0 * r.unit();
+        v.push(Inputs::new(k, j1, j2, j3).unwrap());
+    }
+    for i in 0..80 {
+        let k = 0.05 * 400f64.powf(r.unit());
+        let j1 = sign(&mut r) * 0.1 * 320f64.powf(r.unit());
+        let j2 = sign(&mut r) * 0.03 * 100f64.powf(r.unit());
+        let j3 = sign(&mut r) * 0.3 * 1053f64.powf(r.unit());
+        let mut inp = Inputs::new(k, j1, j2, j3).unwrap();
+        if i % 3 == 0 {
+            inp.gy = 0.3 * 10f64.powf(r.unit());
+        }
+        v.push(inp);
+    }
+    for _ in 0..60 {
+        let k = 0.2 * 25f64.powf(r.unit());
+        let j1 = (2.0 * r.unit() - 1.0) * 3.0;
+        let j2 = (2.0 * r.unit() - 1.0) * 3.0;
+        let j3 = sign(&mut r) * (0.5 + 25.5 * r.unit());
+        v.push(Inputs::new(k, j1, j2, j3).unwrap());
+    }
+    v
+}
+
+/// Runs the command with the command line's arguments after `ep-sets`.
+pub fn run(a: &[String]) -> Result<(), String> {
+    match a.first().map(String::as_str) {
+        Some("refs") => refs(a.get(1).ok_or("refs needs FILE")?),
+        Some("errs") => errs(a.get(1).ok_or("errs needs FILE")?),
+        Some("bits") => {
+            let tols = match a.get(1) {
+                Some(t) => vec![t.parse().map_err(|_| format!("bad TOL `{t}`"))?],
+                None => TOLS.to_vec(),
+            };
+            bits(&tols)
+        }
+        _ => Err("ep-sets needs `refs FILE`, `errs FILE` or `bits [TOL]`".to_string()),
+    }
+}
+
+fn refs(file: &str) -> Result<(), String> {
+    let res = Resolution {
+        y_panels: 128,
+        y_points: 8,
+        s_step: 0.004,
+    };
+    let mut out = String::new();
+    for inp in cases() {
+        let o = elastic_plastic(&inp, &res).map_err(|e| e.to_string())?;
+        out += &format!("{:e} {:e} {:e}\n", o.j4, o.j5, o.j6);
+    }
+    std::fs::write(file, out).map_err(|e| format!("{file}: {e}"))
+}
+
+fn errs(file: &str) -> Result<(), String> {
+    let text = std::fs::read_to_string(file).map_err(|e| format!("{file}: {e}"))?;
+    let r: Vec<Vec<f64>> = text
+        .lines()
+        .map(|l| l.split_whitespace().map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let cs = cases();
+    if r.len() != cs.len() {
+        return Err(format!(
+            "{file}: {} references for {} cases",
+            r.len(),
+            cs.len()
+        ));
+    }
+    for tol in TOLS {
+        let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
+        let e: Vec<f64> = cs
+            .iter()
+            .zip(&r)
+            .map(|(inp, r)| {
+                let o = evaluate(inp, Model::ElasticPlastic, acc).unwrap();
+                let d = [o.j4 - r[0], o.j5 - r[1], o.j6 - r[2]];
+                d.iter().fold(0.0f64, |m, d| m.max(d.abs())) / tol
+            })
+            .collect();
+        print!("tol {tol:e}: worst error/tol");
+        for (name, lo, hi) in SETS {
+            let (i, w) = (lo..hi)
+                .map(|i| (i, e[i]))
+                .fold((lo, 0.0), |m, x| if x.1 > m.1 { x } else { m });
+            print!("  {name} {w:.3} (#{i})");
+        }
+        println!();
+    }
+    Ok(())
+}
+
+fn bits(tols: &[f64]) -> Result<(), String> {
+    for &tol in tols {
+        let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
+        for (i, inp) in cases().iter().enumerate() {
+            let o = evaluate(inp, Model::ElasticPlastic, acc).map_err(|e| e.to_string())?;
+            let (a, b, c) = (o.j4.to_bits(), o.j5.to_bits(), o.j6.to_bits());
+            println!("{tol:e} {i} {a:016x} {b:016x} {c:016x}");
+        }
+    }
+    Ok(())
+}
