@@ -39,17 +39,17 @@
 //! (unloading) the cap, so an event is located to the interpolant's O(h⁴)
 //! instead of the first-order return of a fixed-step scheme.
 //!
-//! **Across the contact** (Y = sin φ): adaptive 4-point Gauss–Legendre
-//! panels in φ, a panel accepted when its value and the sum over its two
-//! halves differ by less than tol·width/π in J4, J5, J6 (the halves' value
-//! kept; refinement blended in between, so a panel's decision adds no jump,
+//! **Across the contact** (Y = sin φ): adaptive Lobatto–Kronrod panels in
+//! φ (4-point Gauss–Lobatto rule and its 7-point Kronrod extension, which
+//! share the panel's ends with the neighbouring panels), the Kronrod value
+//! kept when the two differ by less than tol·width/(2π) in J4, J5, J6
+//! (refinement blended in between, so a panel's decision adds no jump,
 //! though the step sequence along the strips still changes discretely with
 //! the inputs), starting from panels graded towards the spin pole's strip
 //! Y_p = J1/(√k·J3), where the flow pattern changes fastest, and no wider
-//! than 0.8 rad (a wider panel can pass the test by chance). The adaptive
-//! rule and the graded edges are the elastic/plastic model's
-//! (`ep::adaptive_in_phi`, `ep::graded_breaks`) with this model's rule,
-//! grading and depth.
+//! than 0.8 rad (a wider panel can pass the test by chance). The graded
+//! edges are the elastic/plastic model's (`ep::graded_breaks`) with this
+//! model's grading.
 //!
 //! max|J| > [`crate::J_RIGID`] with the largest viscous rate ψ(3/2) below
 //! 1e-9·max|J| returns the rigid/plastic solution (the stress is on the cap
@@ -852,14 +852,6 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
     q
 }
 
-/// 4-point Gauss–Legendre rule on [−1, 1].
-const GL4: [(f64, f64); 4] = [
-    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
-    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-    (0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
-];
-
 /// Largest panel depth below the initial panels.
 const MAX_DEPTH: u32 = 12;
 /// First graded panel width from the spin pole's strip, in φ: POLE_GRADING/|J3|.
@@ -869,11 +861,12 @@ const POLE_GRADING: f64 = 8.0;
 /// adaptive refinement).
 const W0_MIN: f64 = 0.01;
 /// Widest initial panel in φ; wider ones are split into equal parts. A
-/// panel whose 4-point value and halves agree by chance is accepted
-/// unresolved (the halves' value kept): with the pole-graded panels alone,
-/// k = 4.51, J = (0.158, −1.88, −5.67), D = 0.167, Z0 = 2.5 was off by
-/// 2.2·tol at tol = 1e-4 (J6). On 2 × 160 random cases 0.8 leaves a worst
-/// error/tol of 0.48 (1.0: 0.97; 0.6: 0.17 at 20 % more strips).
+/// panel whose two rules agree by chance is accepted unresolved: with the
+/// former rule (4-point Gauss–Legendre against its halves) and the
+/// pole-graded panels alone, k = 4.51, J = (0.158, −1.88, −5.67), D = 0.167,
+/// Z0 = 2.5 was off by 2.2·tol at tol = 1e-4 (J6). On 2 × 160 random cases
+/// 0.8 left a worst error/tol of 0.48 with that rule (1.0: 0.97; 0.6: 0.17
+/// at 20 % more strips; docs/decisions/0045).
 const W_MAX: f64 = 0.8;
 
 /// Initial panel edges in φ graded geometrically towards the spin pole's
@@ -893,6 +886,31 @@ fn initial_breaks(p: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
 pub(crate) fn solve(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f64) {
     let atol = STRIP_TOL * tol;
     let strip_fn = |y: f64| strip_sums(&VStrip::new(p.strip(y), law), atol);
+    let (breaks, nb) = panel_edges(p);
+    lobatto_kronrod_in_phi(&breaks[..nb], tol, (p.k, p.dx), strip_fn)
+}
+
+/// [`solve`] with the former panel rule across Y: 4-point Gauss–Legendre
+/// panels accepted when their value and the sum over their halves differ by
+/// less than tol·width/π (the halves' value kept; `ep::adaptive_in_phi`),
+/// from the same initial panels, with the same strips.
+pub(crate) fn solve_gauss_panels(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f64) {
+    /// 4-point Gauss–Legendre rule on [−1, 1].
+    const GL4: [(f64, f64); 4] = [
+        (-0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
+        (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
+    ];
+    let atol = STRIP_TOL * tol;
+    let strip_fn = |y: f64| strip_sums(&VStrip::new(p.strip(y), law), atol);
+    let (breaks, nb) = panel_edges(p);
+    adaptive_in_phi(&breaks[..nb], &GL4, tol, MAX_DEPTH, (p.k, p.dx), strip_fn)
+}
+
+/// The initial panels' edges in φ: [`initial_breaks`] with panels wider
+/// than W_MAX split into equal parts.
+fn panel_edges(p: &Scaled) -> ([f64; 4 * MAX_BREAKS], usize) {
     let mut b0 = [0.0; MAX_BREAKS];
     let nb0 = initial_breaks(p, &mut b0);
     // Panels wider than W_MAX are split into equal parts (at most 4: the
@@ -907,7 +925,120 @@ pub(crate) fn solve(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f64) {
             nb += 1;
         }
     }
-    adaptive_in_phi(&breaks[..nb], &GL4, tol, MAX_DEPTH, (p.k, p.dx), strip_fn)
+    (breaks, nb)
+}
+
+/// (J4, J5, J6) from the contact sums [∫Zx, ∫Zy, ∫Zy·X, ∫Zx·Y] (over the
+/// strips, dY = cos φ dφ) of a contact of aspect ratio k with spin-pole
+/// offset ΔX: the elastic/plastic model's normalisation (J6 is the torque
+/// about the spin pole).
+fn sums_to_j(k: f64, dx: f64, s: &[f64; 4]) -> (f64, f64, f64) {
+    (
+        s[0] / PI,
+        s[1] / PI,
+        (s[2] + dx * s[1] - k * s[3]) / (PI * k.sqrt()),
+    )
+}
+
+/// Interior nodes of the 4-point Gauss–Lobatto rule (±1/√5) and of its
+/// 7-point Kronrod extension (0, ±√(2/3)) on [−1, 1]; both rules also use
+/// the ends ±1 (W. Gander, W. Gautschi, BIT 40 (2000) 84–101).
+const LOB_B: f64 = 0.447_213_595_499_957_9;
+const KRO_A: f64 = 0.816_496_580_927_726;
+/// Lobatto weights at ±1 and ±1/√5 (degree 5).
+const LOB_W: (f64, f64) = (1.0 / 6.0, 5.0 / 6.0);
+/// Kronrod weights at ±1, ±√(2/3), ±1/√5 and 0 (degree 9).
+const KRO_W: (f64, f64, f64, f64) = (11.0 / 210.0, 72.0 / 245.0, 125.0 / 294.0, 16.0 / 35.0);
+/// A panel's Kronrod value is kept when it differs from the Lobatto value
+/// by less than ACCEPT·tol·width/π (fully refined from 2·ACCEPT on, see
+/// [`lobatto_kronrod_in_phi`]). With 1, a random scan of 1500 cases had a
+/// panel error of 0.62·tol at tol = 1e-4 (k = 6.99, J = (−1.96, −1.58,
+/// 8.76), D = 0.028, gy = 2.84: the two rules agreed by chance across the
+/// pole's strip); 1/2 leaves 0.47·tol there at 15 % more strips on the
+/// random cases (none more on the moderate-spin bench case at tol = 1e-3).
+const ACCEPT: f64 = 0.5;
+
+/// A panel to be integrated: (lo, hi, integrand at lo, at hi, depth, weight
+/// of its value in the result).
+type Panel = (f64, f64, [f64; 4], [f64; 4], u32, f64);
+
+/// 0 for t ≤ 0, 1 for t ≥ 1, C¹ cubic in between.
+#[inline]
+fn smooth_step(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Adaptive Lobatto–Kronrod panels in φ (Y = sin φ) from the sorted edges
+/// `breaks` (from −π/2 to π/2); `strip(Y)` gives a strip's
+/// (∫Zx, ∫Zy, ∫Zy·X). A panel's 7-point Kronrod value is kept when it and
+/// the 4-point Lobatto value differ by less than ACCEPT·tol·width/π in J4,
+/// J5 and J6; otherwise both halves are refined, blended in between (the
+/// share of the halves a C¹ step from 1 to 2 times that, as in
+/// `ep::adaptive_in_phi`), so that a panel's decision adds no jump in the
+/// inputs. Both rules use the panel's ends: neighbouring panels share their
+/// end strips and a panel's halves its ends and midpoint, so a panel costs
+/// 5 new strips (the strips at Y = ±1 are empty).
+fn lobatto_kronrod_in_phi(
+    breaks: &[f64],
+    tol: f64,
+    (k, dx): (f64, f64),
+    mut strip: impl FnMut(f64) -> [f64; 3],
+) -> (f64, f64, f64) {
+    // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx).
+    let mut f = |phi: f64| -> [f64; 4] {
+        let (y, cphi) = phi.sin_cos();
+        if cphi <= 0.0 || phi.abs() >= FRAC_PI_2 {
+            return [0.0; 4];
+        }
+        let st = strip(y);
+        [cphi * st[0], cphi * st[1], cphi * st[2], cphi * y * st[0]]
+    };
+    let mut total = [0.0; 4];
+    let mut stack: Vec<Panel> = Vec::with_capacity(32);
+    let mut flo = f(breaks[0]);
+    for w in breaks.windows(2) {
+        let fhi = f(w[1]);
+        if w[1] > w[0] {
+            stack.push((w[0], w[1], flo, fhi, 0, 1.0));
+        }
+        flo = fhi;
+    }
+    while let Some((lo, hi, fl, fh, depth, weight)) = stack.pop() {
+        let (m, hw) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+        let fm = f(m);
+        let fa = (f(m - hw * KRO_A), f(m + hw * KRO_A));
+        let fb = (f(m - hw * LOB_B), f(m + hw * LOB_B));
+        let mut kv = [0.0; 4];
+        let mut d = [0.0; 4];
+        for i in 0..4 {
+            let ends = fl[i] + fh[i];
+            let bs = fb.0[i] + fb.1[i];
+            let lob = hw * (LOB_W.0 * ends + LOB_W.1 * bs);
+            kv[i] = hw
+                * (KRO_W.0 * ends + KRO_W.1 * (fa.0[i] + fa.1[i]) + KRO_W.2 * bs + KRO_W.3 * fm[i]);
+            d[i] = kv[i] - lob;
+        }
+        let (e4, e5, e6) = sums_to_j(k, dx, &d);
+        let err = e4.abs().max(e5.abs()).max(e6.abs());
+        let allowed = ACCEPT * tol * (hi - lo) / PI;
+        let refine = if depth >= MAX_DEPTH || err.is_nan() {
+            0.0
+        } else {
+            smooth_step(err / allowed - 1.0)
+        };
+        if refine < 1.0 {
+            let w = weight * (1.0 - refine);
+            for i in 0..4 {
+                total[i] += w * kv[i];
+            }
+        }
+        if refine > 0.0 {
+            stack.push((lo, m, fl, fm, depth + 1, weight * refine));
+            stack.push((m, hi, fm, fh, depth + 1, weight * refine));
+        }
+    }
+    sums_to_j(k, dx, &total)
 }
 
 pub(crate) mod reference;
