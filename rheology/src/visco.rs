@@ -887,6 +887,19 @@ pub(crate) fn solve(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f64) {
     let atol = STRIP_TOL * tol;
     let strip_fn = |y: f64| strip_sums(&VStrip::new(p.strip(y), law), atol);
     let (breaks, nb) = panel_edges(p);
+    // Without longitudinal slip (a0 = 0, i.e. J1 = 0) the strip at −Y is
+    // the mirror image of the strip at Y (Zx → −Zx, θ → π − θ; the sinh law
+    // and G = diag(1, gy) are symmetric under it): ∫Zx is odd in Y, ∫Zy,
+    // ∫Zy·X and ∫Zx·Y are even. The initial panels are then symmetric about
+    // Y = 0 (the pole's strip) and the mirrored panels take the same
+    // decisions, so only Y ≥ 0 is integrated: J4 = 0, J5 and J6 twice the
+    // half's, as in the elastic/plastic model.
+    if p.a0 == 0.0
+        && let Some(i0) = breaks[..nb].iter().position(|&b| b == 0.0)
+    {
+        let (_, j5, j6) = lobatto_kronrod_in_phi(&breaks[i0..nb], tol, (p.k, p.dx), strip_fn);
+        return (0.0, 2.0 * j5, 2.0 * j6);
+    }
     lobatto_kronrod_in_phi(&breaks[..nb], tol, (p.k, p.dx), strip_fn)
 }
 

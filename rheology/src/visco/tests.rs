@@ -287,3 +287,31 @@ fn random_scan_against_a_tight_tolerance() {
         assert!(worst[i].0 <= 1.0);
     }
 }
+
+#[test]
+fn half_contact_at_zero_longitudinal_slip_is_continuous() {
+    // J1 = 0 integrates Y ≥ 0 only (the strips at ±Y are mirror images);
+    // J1 = ±1e-13 integrates the whole contact. A differing panel or step
+    // decision would show as a jump of order tol·1e-3 or more; measured
+    // ≤ 5e-11 (k = 0.5, gy = 2: the outputs' own slope in J1 times 1e-13
+    // is below that), asserted ≤ 1e-9.
+    for &(k, j2, j3, d, z0, gy) in &[
+        (5.0, 3.368, 25.816, 1.0, 1.0, 1.0),
+        (0.5, -1.0, 10.0, 1.0, 0.5, 2.0),
+        (2.0, 1.0, 0.0, 0.3, f64::INFINITY, 1.5),
+    ] {
+        let at = |j1: f64| {
+            let inp = Inputs::new(k, j1, j2, j3)
+                .unwrap()
+                .with_stiffness_ratio(gy)
+                .unwrap();
+            solve(&Scaled::of(&inp), Law::new(z0, d), 1e-3)
+        };
+        let v0 = at(0.0);
+        assert_eq!(v0.0, 0.0);
+        for j1 in [1e-13, -1e-13] {
+            let e = max_dev(v0, at(j1));
+            assert!(e <= 1e-9, "k {k} J3 {j3} gy {gy} J1 {j1}: {e:e}");
+        }
+    }
+}
