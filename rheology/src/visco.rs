@@ -56,8 +56,9 @@
 //! everywhere).
 //!
 //! Measured accuracy and cost: crate README, section "Viscoelastic model";
-//! what was tried instead: docs/decisions/0045 and 0046. The former fixed-grid scheme
-//! is kept in [`reference`] as the tests' independent reference.
+//! what was tried instead: docs/decisions/0045, 0046 and 0047. The former
+//! fixed-grid scheme is kept in [`reference`] as the tests' independent
+//! reference.
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
