@@ -318,3 +318,58 @@ fn half_contact_at_zero_longitudinal_slip_is_continuous() {
         }
     }
 }
+
+/// A line in J space: (k, start J, direction, points, D, Z0, gy).
+type Line = (f64, [f64; 3], [f64; 3], usize, f64, f64, f64);
+
+#[test]
+fn no_tolerance_driven_jumps() {
+    // Second differences of J4, J5, J6 at a spacing of 1e-4 in J (as
+    // rheology/tests/smoothness.rs does for the elastic/plastic model): a
+    // smooth stretch contributes |f''|·1e-8, a jump of the discretisation
+    // (a panel or step decision) its full size. The step sequence along
+    // the strips changes discretely with the inputs, so jumps are not
+    // excluded by construction; lines through the moderate-spin case, near
+    // the spin pole at k = 0.2 (Maxwell fluid), and the anisotropic bench
+    // case g at tol = 1e-3: measured ≤ 0.0021·tol, asserted ≤ tol/10.
+    let tol = 1e-3;
+    let lines: [Line; 3] = [
+        (1.0, [1.3, 0.3, 2.0], [1.0, 0.0, 0.0], 400, 1.0, 1.0, 1.0),
+        (
+            0.2,
+            [0.11, 0.08, 0.70],
+            [0.3, 0.2, 1.0],
+            400,
+            0.3,
+            f64::INFINITY,
+            1.0,
+        ),
+        (0.5, [2.0, -1.0, 10.0], [0.3, 0.2, 1.0], 300, 1.0, 0.5, 2.0),
+    ];
+    for (k, p, d, n, de, z0, gy) in lines {
+        let v: Vec<(f64, f64, f64)> = (0..n)
+            .map(|i| {
+                let s = i as f64 * 1e-4;
+                let inp = Inputs::new(k, p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2])
+                    .unwrap()
+                    .with_stiffness_ratio(gy)
+                    .unwrap();
+                solve(&Scaled::of(&inp), Law::new(z0, de), tol)
+            })
+            .collect();
+        let mut m: f64 = 0.0;
+        for w in v.windows(3) {
+            let d2 = (
+                w[2].0 - 2.0 * w[1].0 + w[0].0,
+                w[2].1 - 2.0 * w[1].1 + w[0].1,
+                w[2].2 - 2.0 * w[1].2 + w[0].2,
+            );
+            m = m.max(max_dev(d2, (0.0, 0.0, 0.0)));
+        }
+        println!(
+            "k = {k}, from {p:?} along {d:?}: max |Δ²| = {:.4}·tol",
+            m / tol
+        );
+        assert!(m <= 0.1 * tol, "k = {k} {p:?}: {m:.3e}");
+    }
+}
