@@ -81,7 +81,9 @@
 //!
 //! # Assumptions and valid ranges
 //! * Steady state, contact-mean (lumped) temperature; the local temperature
-//!   field along the strips is not resolved (docs/decisions/0020).
+//!   field along the strips is not resolved (docs/decisions/0020; a local
+//!   field solved on a grid misses the measured high-spin traces that the
+//!   lumped rise fits, docs/decisions/0025).
 //! * Both discs of one material ([`Thermal::disc_conductivity`],
 //!   [`Thermal::disc_heat_capacity`]); the heat leaves through the discs
 //!   (convection by the film is negligible: its Péclet number ρc U h²/(k_f a)

@@ -51,14 +51,17 @@ fn high_speed(k: f64) -> Option<(Body, Body)> {
     Some((Body::steel(33e-3, ry), Body::steel(71.4e-3, f64::INFINITY)))
 }
 
-/// A temperature law of μ for identification studies: ln μ(ΔT) − ln μ =
-/// −β_μ (ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*² (traction-contact `Thermal`).
+/// A temperature law of μ and m for identification studies: ln μ(ΔT) − ln μ =
+/// −β_μ (ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*², ln m(ΔT) − ln m = −β_m ΔT
+/// (traction-contact `Thermal`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Law {
     /// First-order coefficient β_μ, 1/K.
     pub mu_coefficient: f64,
     /// Second-order temperature scale T*, K (+∞: none).
     pub mu_rise_scale: f64,
+    /// Temperature coefficient β_m of the slope, 1/K.
+    pub slope_coefficient: f64,
 }
 
 /// Options of every thermal prediction: the report's isothermal defaults plus
@@ -70,6 +73,7 @@ pub fn options(law: Option<Law>) -> Options {
         thermal: Some(Thermal {
             mu_coefficient: law.map(|l| l.mu_coefficient),
             mu_rise_scale: law.map(|l| l.mu_rise_scale),
+            slope_coefficient: law.map(|l| l.slope_coefficient),
             ..Thermal::default()
         }),
         ..Options::default()
