@@ -492,6 +492,26 @@ const G4: f64 = 29.0 / 250.0;
 const ALPHA2: f64 = 1.0;
 const ALPHA3: f64 = 3.0 / 5.0;
 
+/// The strip sums' increments in closed form. Their stages do not enter the
+/// right-hand side, so U_q,i = γh·P_i + γ·Σ_j c_ij·U_q,j with
+/// P_i = fq_i + γ_i·h·tq + Gq·U_u,i, and Σ_i b_i·U_q,i = h·Σ_i b̃_i·P_i with
+/// b̃ = γ·(I − γ·C)⁻ᵀ·b (C = (c_ij), strictly lower): the increment and its
+/// error estimate are one combination of the stages' P each (the same
+/// numbers as the stage-by-stage recursion, up to round-off).
+const fn tilde(b: [f64; 4]) -> [f64; 4] {
+    let x4 = GAM * b[3];
+    let x3 = GAM * (b[2] + C43 * x4);
+    let x2 = GAM * (b[1] + C32 * x3 + C42 * x4);
+    let x1 = GAM * (b[0] + C21 * x2 + C31 * x3 + C41 * x4);
+    [x1, x2, x3, x4]
+}
+/// b̃ and ẽ of the increments and of their error estimate.
+const QB: [f64; 4] = tilde([B1, B2, B3, B4]);
+const QE: [f64; 4] = tilde([E1, E2, E3, E4]);
+/// Σ b̃_i·γ_i and Σ ẽ_i·γ_i (the factor of h·tq).
+const QBG: f64 = QB[0] * G1 + QB[1] * G2 + QB[2] * G3 + QB[3] * G4;
+const QEG: f64 = QE[0] * G1 + QE[1] * G2 + QE[2] * G3 + QE[3] * G4;
+
 /// One Rosenbrock step: new state, quadrature increments, error estimate
 /// (max norm of the state error × weight and the quadrature errors).
 struct Step<const N: usize> {
@@ -514,17 +534,14 @@ fn ros_step<const N: usize, S: Seg<N>>(
     jac: &Jac<N>,
 ) -> Step<N> {
     let gi = 1.0 / (GAM * h);
-    let gh = GAM * h;
     let ih = 1.0 / h;
     let wi = seg.inverse(gi, &jac.j);
     let mut th = [0.0; N];
     for k in 0..N {
         th[k] = h * jac.t[k];
     }
-    let thq = [h * jac.tq[0], h * jac.tq[1], h * jac.tq[2]];
-    // Stage: r = f + g·h·f_σ + Σ c_j·U_j/h; U_u = W⁻¹·r_u,
-    // U_q = γh·(r_q + Gq·U_u).
-    let stage = |ev: &Eval<N>, g: f64, cu: [f64; N], cq: [f64; 3]| -> ([f64; N], [f64; 3]) {
+    // Stage: r = f + g·h·f_σ + Σ c_j·U_j/h; U = W⁻¹·r.
+    let stage = |ev: &Eval<N>, g: f64, cu: [f64; N]| -> [f64; N] {
         let mut r = [0.0; N];
         for k in 0..N {
             r[k] = ev.f[k] + g * th[k] + ih * cu[k];
@@ -535,62 +552,56 @@ fn ros_step<const N: usize, S: Seg<N>>(
                 uu[k] += wi[k][l] * r[l];
             }
         }
-        let mut uq = [0.0; 3];
-        for i in 0..3 {
-            let mut v = ev.fq[i] + g * thq[i] + ih * cq[i];
-            for k in 0..N {
-                v += jac.gq[i][k] * uu[k];
-            }
-            uq[i] = gh * v;
-        }
-        (uu, uq)
+        uu
     };
-    let (u1, q1) = stage(ev0, G1, [0.0; N], [0.0; 3]);
+    let u1 = stage(ev0, G1, [0.0; N]);
     let mut y = *u;
+    let mut cu = [0.0; N];
     for k in 0..N {
         y[k] += A21 * u1[k];
+        cu[k] = C21 * u1[k];
     }
     let p1 = p.advance(ALPHA2 * h);
     let e2 = seg.eval(p1, &y);
-    let mut cu = [0.0; N];
-    for k in 0..N {
-        cu[k] = C21 * u1[k];
-    }
-    let cq = [C21 * q1[0], C21 * q1[1], C21 * q1[2]];
-    let (u2, q2) = stage(&e2, G2, cu, cq);
+    let u2 = stage(&e2, G2, cu);
     let mut y = *u;
     for k in 0..N {
         y[k] += A31 * u1[k] + A32 * u2[k];
         cu[k] = C31 * u1[k] + C32 * u2[k];
     }
     let e3 = seg.eval(p.advance(ALPHA3 * h), &y);
-    let mut cq = [0.0; 3];
-    for i in 0..3 {
-        cq[i] = C31 * q1[i] + C32 * q2[i];
-    }
-    let (u3, q3) = stage(&e3, G3, cu, cq);
+    let u3 = stage(&e3, G3, cu);
     for k in 0..N {
         cu[k] = C41 * u1[k] + C42 * u2[k] + C43 * u3[k];
     }
-    for i in 0..3 {
-        cq[i] = C41 * q1[i] + C42 * q2[i] + C43 * q3[i];
-    }
-    let (u4, q4) = stage(&e3, G4, cu, cq);
+    let u4 = stage(&e3, G4, cu);
     let mut un = *u;
     let mut err = 0.0_f64;
     let mut sum = 0.0;
     let w = seg.weight();
+    // Σ b̃_i·U_u,i and Σ ẽ_i·U_u,i for the sums' Gq terms.
+    let mut sb = [0.0; N];
+    let mut se = [0.0; N];
     for k in 0..N {
         un[k] += B1 * u1[k] + B2 * u2[k] + B3 * u3[k] + B4 * u4[k];
         let e = E1 * u1[k] + E2 * u2[k] + E3 * u3[k] + E4 * u4[k];
         err = err.max((w * e).abs());
         sum += un[k];
+        sb[k] = QB[0] * u1[k] + QB[1] * u2[k] + QB[2] * u3[k] + QB[3] * u4[k];
+        se[k] = QE[0] * u1[k] + QE[1] * u2[k] + QE[2] * u3[k] + QE[3] * u4[k];
     }
+    // The strip sums (stages 3 and 4 evaluate f at the same point).
     let mut dq = [0.0; 3];
     for i in 0..3 {
-        dq[i] = B1 * q1[i] + B2 * q2[i] + B3 * q3[i] + B4 * q4[i];
-        let e = E1 * q1[i] + E2 * q2[i] + E3 * q3[i] + E4 * q4[i];
-        err = err.max(e.abs());
+        let thq = h * jac.tq[i];
+        let mut vb = QB[0] * ev0.fq[i] + QB[1] * e2.fq[i] + (QB[2] + QB[3]) * e3.fq[i] + QBG * thq;
+        let mut ve = QE[0] * ev0.fq[i] + QE[1] * e2.fq[i] + (QE[2] + QE[3]) * e3.fq[i] + QEG * thq;
+        for k in 0..N {
+            vb += jac.gq[i][k] * sb[k];
+            ve += jac.gq[i][k] * se[k];
+        }
+        dq[i] = h * vb;
+        err = err.max((h * ve).abs());
         sum += dq[i];
     }
     if !sum.is_finite() || err.is_nan() {
