@@ -403,6 +403,25 @@ impl<'a> Cap<'a> {
         let ngn = nx * nx + st.gy * ny * ny;
         ne * p.sn - 1.5 * p.cs - st.law.psi(l) * ngn * p.sn
     }
+
+    /// [`Cap::unload`] where only its sign matters: ψ increases, so with
+    /// ψ(L) ≤ `psi_c` = ψ((3/2)·c) the bound (n·e − L′ − ψ_c·n·G·n)·sin σ ≥ 0
+    /// already keeps the stress on the cap, without the exponential of ψ(L);
+    /// otherwise the exact λ̃.
+    #[inline]
+    fn unload_sign(&self, p: Pt, th: f64, psi_c: f64) -> f64 {
+        let st = self.st;
+        let x = -st.c * p.cs;
+        let (nx, ny) = self.n(th);
+        let ne = st.a * nx + (st.b1 + st.q2 * x) * ny;
+        let ngn_s = (nx * nx + st.gy * ny * ny) * p.sn;
+        let base = ne * p.sn - 1.5 * p.cs;
+        let bound = base - psi_c * ngn_s;
+        if bound >= 0.0 {
+            return bound;
+        }
+        base - st.law.psi(1.5 * st.c * p.sn.max(0.0)) * ngn_s
+    }
 }
 
 impl Seg<1> for Cap<'_> {
@@ -770,6 +789,9 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
         return q;
     }
     let inter = Interior(st);
+    // The largest viscous rate on this strip, ψ((3/2)·c), for
+    // Cap::unload_sign (computed at the first cap step).
+    let mut psi_c = f64::NAN;
     // At the inlet Z ≈ e·c·σ²/2 against L ≈ (3/2)·c·σ: the first step keeps
     // |Z|/L ≤ 1/2. 0.8·tol^(1/4) (0.14 at 1e-3): the former 0.2·tol^(1/4)
     // had step errors ≈ 0 and took ≈ 2 steps more to reach the strip's
@@ -887,7 +909,10 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                 let last = last && h1 == hmax;
                 let p1 = end_point(stp.p1, last);
                 let lam1 = if switches < MAX_SWITCH && !last {
-                    cap.unload(p1, stp.u[0])
+                    if psi_c.is_nan() {
+                        psi_c = st.law.psi(1.5 * st.c);
+                    }
+                    cap.unload_sign(p1, stp.u[0], psi_c)
                 } else {
                     0.0
                 };
