@@ -57,7 +57,7 @@
 //! everywhere).
 //!
 //! Measured accuracy and cost: crate README, section "Viscoelastic model";
-//! what was tried instead: docs/decisions/0045, 0046 and 0047. The former
+//! what was tried instead: docs/decisions/0045 to 0048. The former
 //! fixed-grid scheme is kept in [`reference`] as the tests' independent
 //! reference.
 
@@ -655,9 +655,9 @@ fn hermite_dt(y0: f64, m0: f64, y1: f64, m1: f64, h: f64, t: f64) -> f64 {
 /// approach the root from outside the cap; a step that leaves the bracket
 /// is replaced by regula falsi (bisection if that fails too). To
 /// |Δt| < 1e-10. On the bench cases at tol = 1e-3: 5–9 evaluations per
-/// entry on average, against 10–12 of [`event`] and 4–13 of Newton from the
+/// entry on average, against 9.5–12 of [`event`] and 4–13 of Newton from the
 /// secant point (13 in the anisotropic case g, whose g has a minimum inside
-/// the step; docs/decisions/0047).
+/// the step; docs/decisions/0048).
 fn event_newton(gd: impl Fn(f64) -> (f64, f64), g0: f64, g1: f64) -> f64 {
     let (mut a, mut fa, mut b, mut fb) = (0.0, g0, 1.0, g1);
     let mut t = 1.0;
