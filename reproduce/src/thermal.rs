@@ -147,42 +147,93 @@ struct ViRig {
     correlated_inputs: bool,
 }
 
-/// The rig of an Appendix VI trace.
+/// The rig of an Appendix VI trace, from the report's own tables: the
+/// trace's conditions in Table 2-6 (fluid, inlet temperature, Hertz
+/// pressure, nominal k, tilt angle) and the disc pair and tilt geometry of
+/// that spin-test condition in Tables 2-1 and 2-4 (`traction_fluids::
+/// spin_tests`: low-speed machine at 6°, high-speed at 15° and 30°). Any
+/// trace listed in Table 2-6 therefore has its rig, including those whose
+/// measurements are not in the data file. A data trace labelled with a
+/// suffix (`79100403-U20`) is the table's trace of that number.
 ///
-/// Trace 79072601 ran on the high-speed machine's k = 5 discs, not k = 1 as
-/// its Appendix VI header prints: its printed load and pressure (3000 N,
-/// 1.22 GPa) are the k = 5 discs' (the k = 1 discs give 2.47 GPa at 3000 N),
-/// 1.22 GPa is a test pressure of the k = 5 tests only, and the Appendix
-/// III-E listing gives test 790726-1 (20 m/s, 32.5 °C, 15°, 1.22 GPa, spin
-/// peak 0.084 as printed for the trace) ASPECT* = 0.51 (k = 5) and SPIN* =
-/// 0.59, Z = 0.0092 (k = 5: C''(k = 5, 15°)·1.22 GPa = 0.0086, App. III-E's
-/// 15° rows all lie 7 % above Table 2-5; k = 1: 0.0030; docs/decisions/0024).
-/// The report's m = 53.5 and
-/// μ = 0.083 are its slope and spin-peak correlations at k = 1 (53.51,
-/// 0.0834 at Z = 0); at k = 5 they give 43.29 and 0.0873, which the
-/// prediction takes (`correlated_inputs`). The printed theory (k = 1) is
-/// reproduced unchanged by the isothermal table.
+/// Corrections, each from the report itself:
+/// * Table 2-6 prints trace 80062801 as "8006201" (7 digits; figure 4-8:
+///   Santotrac 50, 20 m/s, 1.0 GPa, 70 °C, k = 5, 6°, as the row).
+/// * Trace 80051402: Table 2-6 prints 1.00 GPa, but its Z = .00135 is
+///   C''(k = 1, 6°)·1.90 GPa and figures 2-16 and 4-5 state 1.9 GPa.
+/// * Trace 79072601 ran on the high-speed machine's k = 5 discs, not k = 1
+///   as Table 2-6 and its Appendix VI header print: its printed load and
+///   pressure (3000 N, 1.22 GPa) are the k = 5 discs' (the k = 1 discs give
+///   2.47 GPa at 3000 N), 1.22 GPa is a test pressure of the k = 5 tests
+///   only, and the Appendix III-E listing gives test 790726-1 (20 m/s,
+///   32.5 °C, 15°, 1.22 GPa, spin peak 0.084 as printed for the trace)
+///   ASPECT* = 0.51 (k = 5) and SPIN* = 0.59, Z = 0.0092 (k = 5: C''(k = 5,
+///   15°)·1.22 GPa = 0.0086, App. III-E's 15° rows all lie 7 % above Table
+///   2-5; k = 1: 0.0030; docs/decisions/0024). The report's m = 53.5 and
+///   μ = 0.083 are its slope and spin-peak correlations at k = 1 (53.51,
+///   0.0834 at Z = 0); at k = 5 they give 43.29 and 0.0873, which the
+///   prediction takes (`correlated_inputs`). The printed theory (k = 1) is
+///   reproduced unchanged by the isothermal table.
 fn vi_rig(trace: &str) -> Result<ViRig, ReproduceError> {
-    let hs = |k| high_speed(k).ok_or_else(|| err("rig", "no disc"));
-    let rig = |tilt_deg, offset, p0, theta, fluid, correlated_inputs| -> Result<ViRig, _> {
-        Ok(ViRig {
-            tilt_deg,
-            ry: 270e-3,
-            offset,
-            bodies: hs(5.0)?,
-            p0,
-            theta,
-            fluid,
-            k: 5.0,
-            correlated_inputs,
-        })
+    let number = trace.split('-').next().unwrap_or(trace);
+    let printed = if number == "80062801" {
+        "8006201"
+    } else {
+        number
     };
-    match trace {
-        "79072704" => rig(30.0, -205e-3, 1.45e9, 73.0, FluidName::Santotrac50, false),
-        "79100403" | "79100403-U20" => rig(15.0, -230e-3, 1.0e9, 50.0, FluidName::Tdf88, false),
-        "79072601" => rig(15.0, -230e-3, 1.22e9, 32.5, FluidName::Santotrac50, true),
-        other => Err(err("Appendix VI", format!("unknown trace {other}"))),
-    }
+    let rows = traction_fluids::main_text_tables().map_err(|e| err("Table 2-6", e))?;
+    let row = rows
+        .iter()
+        .find(|r| r.table == "2-6" && r.trace == printed)
+        .ok_or_else(|| err("Appendix VI", format!("trace {trace} is not in Table 2-6")))?;
+    let [
+        Some(theta),
+        Some(p0_gpa),
+        _,
+        Some(k_printed),
+        Some(tilt_deg),
+        ..,
+    ] = row.values
+    else {
+        return Err(err("Table 2-6", format!("incomplete row of trace {trace}")));
+    };
+    let fluid = match row.fluid.as_str() {
+        "Santotrac 50" => FluidName::Santotrac50,
+        "TDF-88" => FluidName::Tdf88,
+        other => return Err(err("Table 2-6", format!("unknown fluid {other}"))),
+    };
+    let p0_gpa = if number == "80051402" { 1.90 } else { p0_gpa };
+    let (k, correlated_inputs) = if number == "79072601" {
+        (5.0, true)
+    } else {
+        (k_printed, false)
+    };
+    let tests = traction_fluids::spin_tests().map_err(|e| err("Tables 2-4, 2-5", e))?;
+    let test = tests
+        .iter()
+        .find(|t| t.machine.k == k && t.spin_deg == tilt_deg)
+        .ok_or_else(|| {
+            err(
+                "Tables 2-4, 2-5",
+                format!("no spin test at k = {k}, {tilt_deg}° (trace {trace})"),
+            )
+        })?;
+    let mm = 1e-3;
+    let ry = test.machine.ry1_mm * mm;
+    Ok(ViRig {
+        tilt_deg,
+        ry,
+        offset: test.e_mm * mm,
+        bodies: (
+            Body::steel(test.machine.rx1_mm * mm, ry),
+            Body::steel(test.machine.rx2_mm * mm, f64::INFINITY),
+        ),
+        p0: p0_gpa * 1e9,
+        theta,
+        fluid,
+        k,
+        correlated_inputs,
+    })
 }
 
 /// The report's Table 4-1 inputs at a rig: the slope correlation (App.
@@ -682,4 +733,89 @@ pub fn appendix_vii_e(law: Option<[Law; 2]>) -> Result<Vec<VIIEPeak>, ReproduceE
             })
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rigs from Tables 2-6, 2-1 and 2-4 of the traces in the data file,
+    /// against their values as stated in the report's text: high-speed
+    /// machine (upper disc R_x 33 mm, R_y 270 mm; lower disc 71.4 mm),
+    /// offsets −205 mm (30°) and −230 mm (15°) of Table 2-4.
+    #[test]
+    fn appendix_vi_rigs_from_the_report_tables() {
+        let expect = [
+            (
+                "79072704",
+                30.0,
+                -205e-3,
+                1.45e9,
+                73.0,
+                FluidName::Santotrac50,
+                false,
+            ),
+            (
+                "79100403",
+                15.0,
+                -230e-3,
+                1.0e9,
+                50.0,
+                FluidName::Tdf88,
+                false,
+            ),
+            (
+                "79100403-U20",
+                15.0,
+                -230e-3,
+                1.0e9,
+                50.0,
+                FluidName::Tdf88,
+                false,
+            ),
+            (
+                "79072601",
+                15.0,
+                -230e-3,
+                1.22e9,
+                32.5,
+                FluidName::Santotrac50,
+                true,
+            ),
+        ];
+        for (trace, tilt, offset, p0, theta, fluid, correlated) in expect {
+            let r = vi_rig(trace).unwrap();
+            assert_eq!(
+                (r.tilt_deg, r.p0, r.theta, r.fluid, r.k, r.correlated_inputs),
+                (tilt, p0, theta, fluid, 5.0, correlated),
+                "{trace}"
+            );
+            assert!((r.offset - offset).abs() < 1e-12 && (r.ry - 270e-3).abs() < 1e-12);
+            assert_eq!(
+                r.bodies,
+                (
+                    Body::steel(33e-3, 270e-3),
+                    Body::steel(71.4e-3, f64::INFINITY)
+                )
+            );
+        }
+        // Every trace of Table 2-6 has a rig, the held-out ones included (the
+        // low-speed machine at 6°: upper disc R_x 25 mm, lower disc 25 mm).
+        for (trace, k, p0, fluid) in [
+            ("80062306", 1.0, 1.90e9, FluidName::Santotrac50),
+            ("80062801", 5.0, 1.00e9, FluidName::Santotrac50),
+            ("79111902", 1.0, 1.45e9, FluidName::Tdf88),
+            ("80051402", 1.0, 1.90e9, FluidName::Tdf88),
+        ] {
+            let r = vi_rig(trace).unwrap();
+            assert_eq!(
+                (r.tilt_deg, r.k, r.p0, r.fluid),
+                (6.0, k, p0, fluid),
+                "{trace}"
+            );
+            assert_eq!(r.bodies.0.rx, 25e-3);
+            assert_eq!(r.bodies.1.rx, 25e-3);
+        }
+        assert!(vi_rig("12345678").is_err());
+    }
 }

@@ -390,7 +390,9 @@ impl Accuracy {
 /// the inputs; for J1 = 0 only Y ≥ 0, the strips being mirror images about
 /// Y = 0) and the s-step [`Accuracy::s_step`], doubled on
 /// plastic segments that stay non-stiff (κ·h below the RK4 stability
-/// margin) at the doubled step.
+/// margin) at the doubled step; stiff segments on which the slip direction
+/// turns slowly take exponential steps of up to 0.4·√(tol/1e-3) instead
+/// (docs/decisions/0068).
 pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, RheologyError> {
     inp.validate()?;
     let (j4, j5, j6) = match model {

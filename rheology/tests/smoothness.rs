@@ -35,15 +35,18 @@ fn no_tolerance_driven_jumps() {
     // high-spin case k = 5, J3 = 25.8, and near the spin pole at k = 0.2
     // (where panel decisions flip most often), and along J1 through J1 = 0
     // (hit exactly at the 101st point) in the high-spin case, where
-    // `evaluate` switches to integrating half the contact; at tol = 1e-3
+    // `evaluate` switches to integrating half the contact, and through the
+    // bench case k = 20, J = (0.5, 2, 40), whose stiff plastic segments take
+    // exponential steps or RK4 depending on the strip; at tol = 1e-3
     // every second difference must stay below tol/10.
     let tol = 1e-3;
-    let lines: [(f64, [f64; 3], [f64; 3], usize); 5] = [
+    let lines: [(f64, [f64; 3], [f64; 3], usize); 6] = [
         (1.0, [1.3, 0.3, 2.0], [1.0, 0.0, 0.0], 400),
         (5.0, [0.0, 3.25, 25.8], [0.0, 1.0, 0.0], 300),
         (0.2, [0.11, 0.08, 0.70], [0.3, 0.2, 1.0], 1200),
         (5.0, [-(100.0 * 1e-4), 3.37, 25.8], [1.0, 0.0, 0.0], 201),
         (0.07, [0.11, 1.93, -25.0], [0.2, 0.1, 1.0], 300),
+        (20.0, [0.5, 2.0, 40.0], [0.3, 1.0, 0.2], 300),
     ];
     for (k, p, d, n) in lines {
         let m = max_second_difference(k, p, d, 1e-4, n, tol);

@@ -25,7 +25,11 @@
 //!   stiff segments the steps are also shortened where the slip direction
 //!   α turns fast (|α'|·h ≤ 3·s_step, near a strip's
 //!   crossing of vy = 0) and graded from κ·h = 1/2 after yield, where the
-//!   lag of n behind v̂ relaxes within ~1/κ;
+//!   lag of n behind v̂ relaxes within ~1/κ; in [`Strip::integrate_etd`]
+//!   (used by `evaluate`, not by the fixed-resolution reference) stiff
+//!   isotropic segments on which the slip direction turns slowly take
+//!   exponential steps instead (ETDRK4 on the Riccati equation of
+//!   tan((α − θ)/2), `Strip::etd`), several s-steps long;
 //! * elastic unloading where g = (v·n)·cos s + (3/2)·sin s turns negative
 //!   (v·n < dL/dX), located inside the step on the integrated g (the root
 //!   of g's cubic Hermite interpolant over the step as the first trial
@@ -34,6 +38,8 @@
 mod plastic;
 mod quadrature;
 mod yield_point;
+
+use plastic::ETD_MIN_STEP;
 
 pub(crate) use quadrature::{
     MAX_BREAKS, adaptive_in_phi, contact_integral, contact_integral_adaptive_at, graded_breaks,
@@ -213,6 +219,19 @@ impl Strip {
         self.integrate_rec(s_step, s_step_smooth, &mut |_| {})
     }
 
+    /// [`Strip::integrate`] with exponential steps of at most `etd_step`
+    /// on the stiff isotropic plastic segments where the slip direction
+    /// turns slowly (see `Strip::plastic`); RK4 as in [`Strip::integrate`]
+    /// elsewhere.
+    pub(crate) fn integrate_etd(
+        &self,
+        s_step: f64,
+        s_step_smooth: f64,
+        etd_step: f64,
+    ) -> StripSums {
+        self.integrate_with((s_step, s_step_smooth, etd_step), &mut |_| {})
+    }
+
     /// [`Strip::integrate`], reporting the elastic segments and the plastic
     /// states (at every step end) to `rec`, in order from the inlet.
     pub(crate) fn integrate_rec(
@@ -221,6 +240,13 @@ impl Strip {
         s_step_smooth: f64,
         rec: &mut impl FnMut(Event),
     ) -> StripSums {
+        self.integrate_with((s_step, s_step_smooth, 0.0), rec)
+    }
+
+    /// The strip from the inlet to the outlet with the plastic steps
+    /// (s-step, longer s-step on non-stiff segments, exponential step or 0
+    /// for none).
+    fn integrate_with(&self, steps: (f64, f64, f64), rec: &mut impl FnMut(Event)) -> StripSums {
         let c = self.c;
         let mut acc = StripSums::default();
         if c <= 0.0 {
@@ -244,7 +270,6 @@ impl Strip {
             let sn = (xy / c).clamp(-1.0, 1.0);
             let cs = (1.0 - sn * sn).max(0.0).sqrt();
             let n = (z.0 / m, z.1 / m);
-            let steps = (s_step, s_step_smooth);
             let allow_unload = switches < MAX_SWITCH;
             let end = if self.gy == 1.0 {
                 self.plastic::<true>(sn, cs, n, &mut acc, allow_unload, steps, rec)
