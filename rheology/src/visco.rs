@@ -391,6 +391,33 @@ impl<'a> Cap<'a> {
         (te - (ne - lp) * tgn / ngn) / 1.5
     }
 
+    /// (∂/∂θ, ∂/∂σ) of [`Cap::rate`] for gy ≠ 1, exact: with
+    /// dn/dθ = (−ny, nx), d(t·e)/dθ = −n·e, d(n·e)/dθ = t·e,
+    /// d(t·G·n)/dθ = (gy − 1)·(nx² − ny²), d(n·G·n)/dθ = 2·t·G·n, and along σ
+    /// d(e_y)/dσ = q2·c·sin σ, dL′/dσ = −(3/2)/sin²σ (−(3/2)·sin σ/SN_MIN
+    /// where sin σ is capped).
+    #[inline]
+    fn rate_derivatives(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> (f64, f64) {
+        let st = self.st;
+        let x = -st.c * cs;
+        let (ex, ey) = (st.a, st.b1 + st.q2 * x);
+        let te = ey * nx - ex * ny;
+        let ne = ex * nx + ey * ny;
+        let (lp, dlp) = if sn > SN_MIN {
+            (1.5 * cs / sn, -1.5 / (sn * sn))
+        } else {
+            (1.5 * cs / SN_MIN, -1.5 * sn / SN_MIN)
+        };
+        let ngn = nx * nx + st.gy * ny * ny;
+        let tgn = (st.gy - 1.0) * nx * ny;
+        let q = tgn / ngn;
+        let dq = ((st.gy - 1.0) * (nx * nx - ny * ny) - 2.0 * q * tgn) / ngn;
+        let dth = (-ne - te * q - (ne - lp) * dq) / 1.5;
+        let dey = st.q2 * st.c * sn;
+        let dsg = (dey * nx - (dey * ny - dlp) * q) / 1.5;
+        (dth, dsg)
+    }
+
     /// λ̃ = (n·e − L′ − ψ(L)·n·G·n)·sin σ: the stress stays on the cap while
     /// λ̃ ≥ 0.
     #[inline]
@@ -450,13 +477,7 @@ impl Seg<1> for Cap<'_> {
             let ne = st.a * nx + (st.b1 + st.q2 * x) * ny;
             (-ne / 1.5, nx * st.q2 * xp / 1.5)
         } else {
-            // Forward differences (the step error they add is O(δ·h)).
-            let d = 1e-7;
-            let (nx2, ny2) = self.n(th + d);
-            let jj = (self.rate(sn, cs, nx2, ny2) - f) / d;
-            let p2 = p.advance(d);
-            let tt = (self.rate(p2.sn, p2.cs, nx, ny) - f) / d;
-            (jj, tt)
+            self.rate_derivatives(sn, cs, nx, ny)
         };
         let w = 1.5 * st.c * st.c * sn * sn;
         let dw = 3.0 * st.c * st.c * sn * cs;

@@ -373,3 +373,43 @@ fn no_tolerance_driven_jumps() {
         assert!(m <= 0.1 * tol, "k = {k} {p:?}: {m:.3e}");
     }
 }
+
+#[test]
+fn cap_rate_derivatives_match_central_differences() {
+    // The exact ∂/∂θ and ∂/∂σ of the cap's direction rate (gy ≠ 1) against
+    // central differences (step 1e-5: truncation ≈ 1e-10·|f‴|, round-off
+    // ≈ 1e-11/1e-5); asserted within 1e-6·(1 + |value|), on both sides of
+    // the capped sin σ.
+    for &(gy, a, b1, q2) in &[(2.0, 1.3, -0.4, 0.7), (0.4, -2.0, 1.1, -3.0)] {
+        let st = VStrip {
+            c: 0.8,
+            a,
+            b1,
+            q2,
+            gy,
+            law: Law::new(1.0, 1.0),
+        };
+        let cap = Cap::new(&st, 0.0, (1.0, 0.0));
+        for &(s, th) in &[
+            (0.3_f64, 0.4_f64),
+            (1.2, -2.0),
+            (2.5, 2.9),
+            (3.13, 1.0),
+            (0.01, -0.7),
+        ] {
+            let f = |s: f64, th: f64| cap.rate(s.sin(), s.cos(), th.cos(), th.sin());
+            let (dth, dsg) = cap.rate_derivatives(s.sin(), s.cos(), th.cos(), th.sin());
+            let d = 1e-5;
+            let nth = (f(s, th + d) - f(s, th - d)) / (2.0 * d);
+            let nsg = (f(s + d, th) - f(s - d, th)) / (2.0 * d);
+            assert!(
+                (dth - nth).abs() <= 1e-6 * (1.0 + nth.abs()),
+                "θ: {dth} {nth}"
+            );
+            assert!(
+                (dsg - nsg).abs() <= 1e-6 * (1.0 + nsg.abs()),
+                "σ: {dsg} {nsg}"
+            );
+        }
+    }
+}
