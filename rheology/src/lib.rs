@@ -475,7 +475,7 @@ pub(crate) fn rigid_plastic(inp: &Inputs, acc: Accuracy) -> Result<Outputs, Rheo
 /// `deborah` = D = ηU/(Ḡa) > 0 (`inf` returns the elastic/plastic model),
 /// `z0` = τ0/τ̄ > 0 (`inf` = linear Maxwell fluid). Adaptive fourth-order
 /// Rosenbrock steps along each strip with the cap entries and unloadings
-/// located inside the steps, adaptive Gauss–Legendre panels across the
+/// located inside the steps, adaptive Lobatto–Kronrod panels across the
 /// contact (`visco.rs`); within `tol` of the converged solution.
 pub(crate) fn viscoelastic(
     inp: &Inputs,

@@ -31,6 +31,27 @@ pub fn grid(inp: &Inputs, props: Properties, cells: usize) -> Result<Outputs, Rh
     Ok(finish(inp, j4, j5, j6))
 }
 
+/// The viscoelastic model of [`crate::evaluate`] at the accuracy
+/// `acc.tol` with the former panel rule across Y: 4-point Gauss–Legendre
+/// panels, each accepted when its value and the sum over its two halves
+/// differ by less than tol·width/π (12 strips per accepted initial panel,
+/// against 5 of the Lobatto–Kronrod rule of `evaluate`); the same strips
+/// and initial panels. For tests and cost comparisons
+/// (`cargo xtask prof-visco CASE TOL REPS gauss`).
+pub fn viscoelastic_gauss_panels(
+    inp: &Inputs,
+    deborah: f64,
+    z0: f64,
+    acc: crate::Accuracy,
+) -> Result<Outputs, RheologyError> {
+    inp.validate()?;
+    crate::check_viscoelastic(deborah, z0)?;
+    let sc = ep::Scaled::of(inp);
+    let law = crate::visco::Law::new(z0, deborah);
+    let (j4, j5, j6) = crate::visco::solve_gauss_panels(&sc, law, acc.tol);
+    Ok(finish(inp, j4, j5, j6))
+}
+
 /// The former viscoelastic integrator (sinh law with the limit as a cap,
 /// [`crate::Model::Viscoelastic`]) at an explicit, fixed resolution:
 /// `res.y_panels` × `res.y_points` Gauss–Legendre strips in φ and `nsteps`

@@ -1,7 +1,7 @@
 //! Developer tools of the traction workspace (`cargo xtask COMMAND ARGS`):
 //!
 //! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
-//! - `prof-visco CASE TOL REPS [old]`: the same for the viscoelastic benches;
+//! - `prof-visco CASE TOL REPS [old|gauss]`: the same for the viscoelastic benches;
 //! - `ep-sets refs|errs FILE`, `ep-sets bits [TOL]`: the elastic/plastic
 //!   solver against 128-panel references on 307 cases, and its results' bits;
 //! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
@@ -19,9 +19,10 @@ const USAGE: &str = "usage: cargo xtask COMMAND ARGS
 commands:
   prof [CASE [TOL [REPS]]]        callgrind driver: CASE m h p s a b c (bench set, prof.rs),
                                   TOL accuracy (default 1e-3), REPS evaluations (default 1)
-  prof-visco [CASE [TOL [REPS [old]]]]
+  prof-visco [CASE [TOL [REPS [old|gauss]]]]
                                   the same for the viscoelastic model: CASE m h x l e g
-                                  (prof_visco.rs); `old` = the former fixed-grid scheme
+                                  (prof_visco.rs); `old` = the former fixed-grid scheme,
+                                  `gauss` = the former Gauss-Legendre panel rule
   ep-sets refs FILE | errs FILE | bits [TOL]
                                   elastic/plastic solver on 307 cases (ep_sets.rs): write
                                   128-panel references, worst error/tol per set against

@@ -1,8 +1,10 @@
 //! Callgrind driver for the viscoelastic benches: `prof-visco CASE TOL REPS
-//! [old]`; instructions per evaluation = (Ir(REPS=3) − Ir(1))/2. `old` runs
-//! the former fixed-grid scheme with its former resolution at TOL
+//! [old|gauss]`; instructions per evaluation = (Ir(REPS=3) − Ir(1))/2. `old`
+//! runs the former fixed-grid scheme with its former resolution at TOL
 //! (`reference::viscoelastic`: 2·⌊max(1, −log10 TOL − 1)⌋ panels of 8
-//! points, ⌈20·10^(−log10(TOL)/2)⌉ uniform steps per strip).
+//! points, ⌈20·10^(−log10(TOL)/2)⌉ uniform steps per strip), `gauss` the
+//! adaptive solver with the former Gauss–Legendre panel rule
+//! (`reference::viscoelastic_gauss_panels`).
 #![allow(clippy::unwrap_used)]
 use crate::arg;
 use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate, reference};
@@ -13,7 +15,10 @@ pub fn run(a: &[String]) -> Result<(), String> {
     let case = a.first().map(|s| s.as_str()).unwrap_or("m");
     let tol: f64 = arg(a, 1, "TOL", Some(1e-3))?;
     let reps: usize = arg(a, 2, "REPS", Some(1))?;
-    let old = a.get(3).is_some_and(|s| s == "old");
+    let variant = a.get(3).map(String::as_str);
+    if let Some(v) = variant.filter(|v| *v != "old" && *v != "gauss") {
+        return Err(format!("unknown variant `{v}` (old, gauss)"));
+    }
     let c = VISCOELASTIC
         .iter()
         .find(|c| c.letter == case)
@@ -30,12 +35,10 @@ pub fn run(a: &[String]) -> Result<(), String> {
         s_step: 0.1,
     };
     let nsteps = (20.0 * 10f64.powf(lt * 0.5)).ceil().clamp(40.0, 20000.0) as usize;
-    let eval = |i: &Inputs| {
-        if old {
-            reference::viscoelastic(i, deborah, z0, &res, nsteps).unwrap()
-        } else {
-            evaluate(i, Model::Viscoelastic { deborah, z0 }, acc).unwrap()
-        }
+    let eval = |i: &Inputs| match variant {
+        Some("old") => reference::viscoelastic(i, deborah, z0, &res, nsteps).unwrap(),
+        Some(_) => reference::viscoelastic_gauss_panels(i, deborah, z0, acc).unwrap(),
+        None => evaluate(i, Model::Viscoelastic { deborah, z0 }, acc).unwrap(),
     };
     let mut o = eval(&inp);
     for _ in 1..reps {

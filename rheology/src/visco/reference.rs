@@ -133,6 +133,15 @@ pub(crate) fn maxwell_strip(st: &super::VStrip) -> [f64; 3] {
     [ux * (i0 + l0), uy * (i0 + l0), uy * (i1 + l1)]
 }
 
+/// 4-point Gauss–Legendre rule on [−1, 1].
+#[cfg(test)]
+const GL4: [(f64, f64); 4] = [
+    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
+    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
+];
+
 /// Composite 4-point Gauss–Legendre in φ (Y = sin φ) over `panels` equal
 /// panels of an exact strip functional.
 #[cfg(test)]
@@ -145,7 +154,7 @@ pub(crate) fn contact_exact(
     let mut s = [0.0; 4];
     for i in 0..panels {
         let lo = -FRAC_PI_2 + i as f64 * width;
-        let v = crate::ep::panel_sums(&super::GL4, lo, lo + width, &mut f);
+        let v = crate::ep::panel_sums(&GL4, lo, lo + width, &mut f);
         for (a, b) in s.iter_mut().zip(v) {
             *a += b;
         }
