@@ -369,7 +369,7 @@ impl Strip {
     /// slip direction turns by more than `a_h` within the step (beyond
     /// MAX_SUB stability sub-steps: the quasi-steady direction).
     /// `rates`: the step's (κ·h, |α'|·h) bounds if the caller has them.
-    /// Inlined: its call and the state passed through memory cost ≈ 50
+    /// Inlined: its call and the state passed through memory cost ≈ 40
     /// instructions per stiff step (bit-identical results; cases a, b, c
     /// −3…−4 % instructions at tol 1e-3).
     #[allow(clippy::too_many_arguments)]
