@@ -574,37 +574,60 @@ impl Strip {
                 s_cur += h;
                 self.advance::<ISO>(&p, h, c2, s2, a_h, &mut cache, step_rates)
             };
-            if last {
-                q.sn = 1.0;
-                q.cs = 0.0;
-            }
-            if allow_unload && q.cs > OUTLET_CS {
-                let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
-                if g1 < 0.0 {
-                    let best = self.locate_unload::<ISO>(&p, &q, h, g1, a_h, &mut cache);
-                    *acc += best.acc;
-                    let l = 1.5 * self.c * best.cs;
-                    rec(Event::Plastic {
-                        x: self.c * best.sn,
-                        n: (best.nx, best.ny),
-                    });
-                    return PlasticEnd::Unload {
-                        x: self.c * best.sn,
-                        z: (l * best.nx, l * best.ny),
-                    };
-                }
+            let step = (h, last, allow_unload, a_h);
+            if let Some(end) = self.step_end::<ISO>(&p, &mut q, step, &mut cache, acc, rec) {
+                return end;
             }
             p = q;
-            rec(Event::Plastic {
-                x: self.c * p.sn,
-                n: (p.nx, p.ny),
-            });
             if last {
                 break;
             }
         }
         *acc += p.acc;
         PlasticEnd::Outlet
+    }
+
+    /// End of one plastic step from `p` to `q` of length h, shared by the
+    /// RK4 and exponential stepping (`(h, last, allow_unload, a_h)`): the
+    /// last step ends exactly at the outlet; where unloading starts inside
+    /// the step (g < 0 at its end) it is located, the segment's sums up to it
+    /// added to `acc` and the end returned; otherwise `q` is recorded and the
+    /// segment goes on (None).
+    #[inline(always)]
+    fn step_end<const ISO: bool>(
+        &self,
+        p: &PState,
+        q: &mut PState,
+        (h, last, allow_unload, a_h): (f64, bool, bool, f64),
+        cache: &mut (f64, f64, f64),
+        acc: &mut StripSums,
+        rec: &mut impl FnMut(Event),
+    ) -> Option<PlasticEnd> {
+        if last {
+            q.sn = 1.0;
+            q.cs = 0.0;
+        }
+        if allow_unload && q.cs > OUTLET_CS {
+            let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
+            if g1 < 0.0 {
+                let best = self.locate_unload::<ISO>(p, q, h, g1, a_h, cache);
+                *acc += best.acc;
+                let l = 1.5 * self.c * best.cs;
+                rec(Event::Plastic {
+                    x: self.c * best.sn,
+                    n: (best.nx, best.ny),
+                });
+                return Some(PlasticEnd::Unload {
+                    x: self.c * best.sn,
+                    z: (l * best.nx, l * best.ny),
+                });
+            }
+        }
+        rec(Event::Plastic {
+            x: self.c * q.sn,
+            n: (q.nx, q.ny),
+        });
+        None
     }
 
     /// The exponential steps (count, length) of an isotropic plastic segment
@@ -671,31 +694,11 @@ impl Strip {
                 }
             };
             let last = i == nsteps;
-            if last {
-                q.sn = 1.0;
-                q.cs = 0.0;
-            }
-            if allow_unload && q.cs > OUTLET_CS {
-                let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
-                if g1 < 0.0 {
-                    let best = self.locate_unload::<true>(&p, &q, h, g1, a_h, &mut cache);
-                    *acc += best.acc;
-                    let l = 1.5 * self.c * best.cs;
-                    rec(Event::Plastic {
-                        x: self.c * best.sn,
-                        n: (best.nx, best.ny),
-                    });
-                    return PlasticEnd::Unload {
-                        x: self.c * best.sn,
-                        z: (l * best.nx, l * best.ny),
-                    };
-                }
+            let step = (h, last, allow_unload, a_h);
+            if let Some(end) = self.step_end::<true>(&p, &mut q, step, &mut cache, acc, rec) {
+                return end;
             }
             p = q;
-            rec(Event::Plastic {
-                x: self.c * p.sn,
-                n: (p.nx, p.ny),
-            });
         }
         *acc += p.acc;
         PlasticEnd::Outlet
