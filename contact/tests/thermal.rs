@@ -53,6 +53,22 @@ fn state(u: f64, du: f64, dv: f64, w: f64) -> OperatingState {
         .expect("state")
 }
 
+/// The root of g(x) = x − rise(x) on [0, 1000] K by plain bisection (60
+/// halvings: 1e-15 K), the independent solve the fixed point is checked
+/// against.
+fn bisect_fixed_point(mut rise: impl FnMut(f64) -> f64) -> f64 {
+    let (mut lo, mut hi) = (0.0, 1000.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if mid - rise(mid) < 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
 /// The converged rise satisfies ΔT = (R_s + R_f)·P/(πab) with P evaluated by
 /// an isothermal contact at μ(ΔT) (an independent evaluation), and equals the
 /// root found by plain bisection on that isothermal contact.
@@ -88,18 +104,9 @@ fn fixed_point_matches_an_independent_solve() {
     // closed form at zero spin is exact, so no extra).
     let tol = TEMPERATURE_TOLERANCE.max(TEMPERATURE_RELATIVE_TOLERANCE * dt);
     assert!((rise(dt) - dt).abs() <= tol, "{} vs {dt}", rise(dt));
-    // Bisection on g(x) = x − rise(x).
-    let (mut lo, mut hi) = (0.0, 1000.0);
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if mid - rise(mid) < 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
     // The fixed point's slope g'(x) = 1 − rise'(x) ≥ 1, so |Δx| ≤ |g| ≤ tol.
-    assert!((0.5 * (lo + hi) - dt).abs() <= tol, "{lo} vs {dt}");
+    let root = bisect_fixed_point(rise);
+    assert!((root - dt).abs() <= tol, "{root} vs {dt}");
 }
 
 #[test]
@@ -230,16 +237,8 @@ fn second_order_law_matches_an_independent_solve() {
     };
     // Tolerance: the solver's own (closed form at zero spin, exact).
     let tol = TEMPERATURE_TOLERANCE.max(TEMPERATURE_RELATIVE_TOLERANCE * dt);
-    let (mut lo, mut hi) = (0.0, 1000.0);
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if mid - rise(mid) < 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    assert!((0.5 * (lo + hi) - dt).abs() <= tol, "{lo} vs {dt}");
+    let root = bisect_fixed_point(rise);
+    assert!((root - dt).abs() <= tol, "{root} vs {dt}");
     // T* = ∞ is no second-order term: the isothermal contact (β_μ = 0).
     let none = contact(
         Fluid::constant(m, mu).unwrap(),
