@@ -112,10 +112,15 @@ impl Law {
                 id * (1.0 + 0.5 * x2 * (1.0 + x2 / 12.0)),
             );
         }
+        // 1/(2x·D) beside the exponential, off its chain of dependent
+        // operations.
+        let hx = 0.5 * id / x;
         let ex = x.min(700.0).exp();
         let ix = 1.0 / ex;
-        let (sh, ch) = (0.5 * (ex - ix), 0.5 * (ex + ix));
-        ((sh / x * id).min(RATE_MAX), (ch * id).min(RATE_MAX))
+        (
+            ((ex - ix) * hx).min(RATE_MAX),
+            (0.5 * (ex + ix) * id).min(RATE_MAX),
+        )
     }
 
     /// The largest viscous rate inside the contact, ψ(3/2) (infinite when
@@ -313,7 +318,8 @@ impl Seg<2> for Interior<'_> {
         let r = (zx * zx + zy * zy).sqrt();
         let (mu, dpsi) = st.law.rates(r);
         let (nx, ny) = if r > 0.0 {
-            (zx / r, zy / r)
+            let ir = 1.0 / r;
+            (zx * ir, zy * ir)
         } else {
             (0.0, 0.0)
         };
@@ -585,8 +591,9 @@ fn ros_step<const N: usize, S: Seg<N>>(
     ev0: &Eval<N>,
     jac: &Jac<N>,
 ) -> Step<N> {
-    let gi = 1.0 / (GAM * h);
     let ih = 1.0 / h;
+    // 1/(γh) by a multiplication (exact for γ = 1/2).
+    let gi = ih * (1.0 / GAM);
     let wi = seg.inverse(gi, &jac.j);
     let mut th = [0.0; N];
     for k in 0..N {
