@@ -172,8 +172,11 @@ fn smooth_step(t: f64) -> f64 {
 /// total strips at tol 1e-2/1e-3/1e-4 are 77.0 k/103.8 k/181.0 k with 3,
 /// 81.8 k/101.6 k/183.5 k with 2, 73.9 k/110.7 k/187.8 k with 4 and
 /// 70.0 k/134.4 k/212.8 k with 8, the worst error/tol ≤ 0.22 at 1e-2 and
-/// 1e-3 for all; 3 costs the fewest instructions on the bench set (2: case
-/// a +60 % at 1e-3, its panels at the pole refined; docs/decisions/0074).
+/// 1e-3 for all. Instructions on the bench set at 1e-3: 3 halves the worst
+/// case (8: cases a, b, c 1.25 M/949 k/953 k; 3: 503 k/589 k/490 k; 2: a
+/// +60 %); on 307 random cases in total 8 is 21 % and 4 % cheaper than 3
+/// at 1e-2 and 1e-4 (its strips lie farther from the pole, where they are
+/// cheaper) and 3 % dearer at 1e-3 (docs/decisions/0074).
 const POLE_GRADING: f64 = 3.0;
 
 /// Growth of the initial panel edges' distance from the spin pole's strip
@@ -188,8 +191,9 @@ const POLE_GRADING: f64 = 3.0;
 /// 1e-2/1e-3 and 7–8 % at 1e-4 (8: a further 0–11 % on the wide set only);
 /// 4 keeps some grading for very large |J3| (docs/decisions/0065). With the
 /// Lobatto–Kronrod panels and POLE_GRADING = 3, growth 6 takes 10 % fewer
-/// strips at 1e-2 but 2–8 % more at 1e-3 and 1e-4 (bench set), and 3 more
-/// at every tolerance.
+/// strips at 1e-2 but 8 % more at 1e-4 (1842 cases), 3 more at 1e-2 and
+/// 1e-3 (first edge 4/|J3|); in instructions over 307 cases 6 and 8
+/// differ from 4 by −0.5 % and +2 % (docs/decisions/0074).
 const POLE_GRADING_GROWTH: f64 = 4.0;
 
 /// Largest number of initial panel edges: at most MAX_BREAKS/2 − 2 graded
