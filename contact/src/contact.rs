@@ -114,6 +114,13 @@ impl TractionContact {
                     valid: "required for user m, μ: Film::Thickness or Film::HamrockDowson",
                 });
             }
+            if user && th.film == Film::FromFluidInletHeated {
+                return Err(ContactError::OutOfRange {
+                    quantity: "film thickness h (m)",
+                    value: f64::NAN,
+                    valid: "Film::FromFluidInletHeated needs a report fluid's η₀(θ); for a user fluid: Film::HamrockDowsonInletHeated",
+                });
+            }
         }
         let geometry = Geometry::new(body1, body2)?;
         let k = geometry.k;

@@ -114,6 +114,9 @@
 //! film), with μ and m at θ + ΔT, solved self-consistently:
 //! `ΔT = (P/(πab))·(R_s + h/(8k_f))`,
 //! `μ = μ(θ)e^(−β_μ(ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*²)`, `m = m(θ)e^(−β_mΔT)`.
+//! The film h is given or Hamrock–Dowson's, optionally reduced by inlet
+//! shear heating ([`Film::HamrockDowsonInletHeated`],
+//! [`Film::FromFluidInletHeated`]; not the report fluids' default).
 //! Equations, sources and ranges in [`thermal`]; the result's
 //! [`Evaluation::temperature_rise`], `m_used`, `mu_used` are at θ + ΔT.
 //!

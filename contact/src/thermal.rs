@@ -48,6 +48,23 @@
 //! ([`Film::HamrockDowson`]). It is set by the inlet and does not change with
 //! the film's temperature rise.
 //!
+//! Optionally ([`Film::HamrockDowsonInletHeated`],
+//! [`Film::FromFluidInletHeated`]) that film is reduced by the shear heating
+//! of the inlet's reverse flow, with the thermal reduction factor of Gupta,
+//! Cheng, Zhu, Forster & Schrand (*J. Tribol.* 114, 1992) for point contacts
+//! ([`inlet_heating_factor`]):
+//!
+//! ```text
+//! h = φ_T h_HD,  φ_T = (1 − 13.2 (p_h/E') L^0.42) / (1 + 0.213 (1 + 2.23 S^0.83) L^0.64)
+//! L = β_η η₀ U²/k_f  (thermal loading, Murch & Wilson 1975),  S = |ΔU|/U
+//! ```
+//!
+//! with β_η = −d ln η/dθ of the inlet viscosity and p_h the maximum Hertz
+//! pressure. The report fluids' identified T* go with the isothermal inlet
+//! ([`Film::FromFluid`]): with the inlet-heated film re-identified by the same
+//! procedure, they miss the validation goals (docs/decisions/0027), so it is
+//! an option, not their default.
+//!
 //! The fluid at the raised temperature: ln μ to second order in the rise,
 //!
 //! ```text
@@ -90,6 +107,11 @@
 //!   is ~1e-3 at 80 m/s, h = 0.5 µm).
 //! * Hamrock–Dowson was fitted for 1 ≤ k ≤ 8 (Hamrock & Dowson 1977); outside
 //!   it the formula is extrapolated.
+//! * The inlet heating factor takes the longitudinal slide-to-roll ratio
+//!   |ΔU|/U ≤ 2 (side slip and spin are not part of its fit) and p_h/E' ≤ 0.1;
+//!   it is an error where its numerator is not positive (L beyond
+//!   (13.2 p_h/E')^(−1/0.42), ≈ 124 at p_h/E' = 0.01; the report's tests
+//!   reach L = 39 at 80 m/s, 50 °C).
 
 use std::f64::consts::PI;
 
@@ -141,6 +163,26 @@ pub enum Film {
     /// `FilmProperties`: η₀(θ) and α → Hamrock–Dowson). Only for
     /// [`crate::Fluid::Report`].
     FromFluid,
+    /// [`Film::HamrockDowson`] reduced by inlet shear heating: `h = φ_T h_HD`
+    /// with the thermal reduction factor of Gupta et al. (1992,
+    /// [`inlet_heating_factor`]) at the thermal loading
+    /// `L = β_η η₀ U²/k_f` ([`thermal_loading`]; k_f from
+    /// [`Thermal::fluid_conductivity`]) and the slide-to-roll ratio |ΔU|/U.
+    HamrockDowsonInletHeated {
+        /// Inlet dynamic viscosity η₀, Pa·s.
+        viscosity: f64,
+        /// Pressure–viscosity coefficient α, 1/Pa.
+        pressure_viscosity: f64,
+        /// Temperature–viscosity coefficient β_η = −d ln η/dθ of the inlet
+        /// viscosity at the inlet temperature, 1/K.
+        viscosity_temperature: f64,
+    },
+    /// [`Film::FromFluid`] reduced by inlet shear heating as
+    /// [`Film::HamrockDowsonInletHeated`], with the report fluid's own η₀(θ),
+    /// α, k_f and β_η (the slope of its ln η between 40 and 100 °C). Only for
+    /// [`crate::Fluid::Report`]; not the default: the report fluids' T* are
+    /// identified with [`Film::FromFluid`] (docs/decisions/0027).
+    FromFluidInletHeated,
 }
 
 /// Parameters of the thermal model ([`crate::Options::thermal`]). SI units.
@@ -214,6 +256,16 @@ pub const FILM_THICKNESS_RANGE: Range = Range::open(0.0, 1e-3).closed_above().wi
 pub const VISCOSITY_RANGE: Range = Range::open(0.0, 1e6).closed_above().with_unit("Pa·s");
 /// Valid pressure–viscosity coefficients α of the Hamrock–Dowson film.
 pub const PRESSURE_VISCOSITY_RANGE: Range = Range::closed(0.0, 1e-6).with_unit("1/Pa");
+/// Valid temperature–viscosity coefficients β_η = −d ln η/dθ of the inlet
+/// ([`Film::HamrockDowsonInletHeated`]): 0 (no inlet heating) to 1 1/K
+/// (mineral and synthetic oils: 0.01–0.06 1/K).
+pub const VISCOSITY_TEMPERATURE_RANGE: Range = Range::closed(0.0, 1.0).with_unit("1/K");
+/// Valid slide-to-roll ratios |ΔU|/U of the inlet heating factor
+/// ([`inlet_heating_factor`]): both surfaces move into the contact.
+pub const SLIDE_ROLL_RANGE: Range = Range::closed(0.0, 2.0);
+/// Valid Hertz pressures over the reduced modulus p_h/E' of the inlet heating
+/// factor ([`inlet_heating_factor`]).
+pub const PRESSURE_RATIO_RANGE: Range = Range::closed(0.0, 0.1);
 /// Valid temperature scales T* of the second-order term of ln μ: positive,
 /// +∞ accepted (no second-order term).
 pub const RISE_SCALE_RANGE: Range = Range::greater_than(0.0).with_infinity().with_unit("K");
@@ -242,7 +294,20 @@ impl Thermal {
                 PRESSURE_VISCOSITY_RANGE
                     .check("pressure–viscosity coefficient α", pressure_viscosity)?;
             }
-            Film::FromFluid => {}
+            Film::HamrockDowsonInletHeated {
+                viscosity,
+                pressure_viscosity,
+                viscosity_temperature,
+            } => {
+                VISCOSITY_RANGE.check("inlet viscosity η₀", viscosity)?;
+                PRESSURE_VISCOSITY_RANGE
+                    .check("pressure–viscosity coefficient α", pressure_viscosity)?;
+                VISCOSITY_TEMPERATURE_RANGE.check(
+                    "temperature–viscosity coefficient β_η of the inlet",
+                    viscosity_temperature,
+                )?;
+            }
+            Film::FromFluid | Film::FromFluidInletHeated => {}
         }
         if let Some(t) = self.mu_rise_scale {
             RISE_SCALE_RANGE.check("temperature scale T* of μ", t)?;
@@ -280,6 +345,60 @@ pub fn hamrock_dowson_central(
     // u^0.67·g^0.53·w^−0.067 as one exponential (half the cost of three powf).
     let group = (0.67 * u.ln() + 0.53 * g.ln() - 0.067 * w.ln()).exp();
     2.69 * rx * group * (1.0 - 0.61 * (-0.73 * k).exp())
+}
+
+/// Thermal loading parameter of the inlet `L = β_η η₀ U²/k_f`
+/// (dimensionless): the viscous heating of the inlet's reverse flow against
+/// its conduction (Murch & Wilson, *J. Lubr. Technol.* 97, 1975): β_η =
+/// −d ln η/dθ (1/K), η₀ (Pa·s), U the rolling (mean entraining) speed (m/s),
+/// k_f the fluid's conductivity (W/(m·K)).
+pub fn thermal_loading(
+    viscosity_temperature: f64,
+    viscosity: f64,
+    speed: f64,
+    conductivity: f64,
+) -> f64 {
+    viscosity_temperature * viscosity * speed * speed / conductivity
+}
+
+/// The thermal reduction factor of the central film by inlet shear heating
+/// of Gupta, Cheng, Zhu, Forster & Schrand (*J. Tribol.* 114, 1992), fitted
+/// to thermal EHL solutions of point contacts in rolling and sliding:
+///
+/// ```text
+/// φ_T = (1 − 13.2 (p_h/E') L^0.42) / (1 + 0.213 (1 + 2.23 S^0.83) L^0.64)
+/// ```
+///
+/// `thermal_loading` L ([`thermal_loading`], ≥ 0), `pressure_ratio` p_h/E'
+/// (maximum Hertz pressure over the reduced modulus,
+/// [`PRESSURE_RATIO_RANGE`]), `slide_roll_ratio` S = |ΔU|/U
+/// ([`SLIDE_ROLL_RANGE`]; side slip and spin do not enter the fit). 1 at
+/// L = 0; in (0, 1] where the numerator is positive (up to L ≈ 124 at
+/// p_h/E' = 0.01), an error beyond (the fit gives no film there). Its
+/// line-contact, pure-rolling counterpart is Murch & Wilson's (1975)
+/// 3.94/(3.94 + L^0.62).
+pub fn inlet_heating_factor(
+    thermal_loading: f64,
+    pressure_ratio: f64,
+    slide_roll_ratio: f64,
+) -> Result<f64, ContactError> {
+    Range::NON_NEGATIVE.check(
+        "thermal loading L = β_η η₀ U²/k_f of the inlet",
+        thermal_loading,
+    )?;
+    PRESSURE_RATIO_RANGE.check("Hertz pressure over reduced modulus p_h/E'", pressure_ratio)?;
+    SLIDE_ROLL_RANGE.check("slide-to-roll ratio |ΔU|/U", slide_roll_ratio)?;
+    let numerator = 1.0 - 13.2 * pressure_ratio * thermal_loading.powf(0.42);
+    if numerator <= 0.0 {
+        return Err(ContactError::OutOfRange {
+            quantity: "thermal loading L = β_η η₀ U²/k_f of the inlet",
+            value: thermal_loading,
+            valid: "below (1/(13.2 p_h/E'))^(1/0.42), where the inlet heating factor of Gupta et al. (1992) is positive",
+        });
+    }
+    let denominator =
+        1.0 + 0.213 * (1.0 + 2.23 * slide_roll_ratio.powf(0.83)) * thermal_loading.powf(0.64);
+    Ok(numerator / denominator)
 }
 
 /// Thermal resistance (mean surface temperature rise per unit mean flux,
@@ -553,7 +672,70 @@ fn film(
             value: f64::NAN,
             valid: "required for user m, μ: Film::Thickness or Film::HamrockDowson",
         }),
+        (
+            Film::HamrockDowsonInletHeated {
+                viscosity,
+                pressure_viscosity,
+                viscosity_temperature,
+            },
+            _,
+            _,
+        ) => {
+            let k_f = th
+                .fluid_conductivity
+                .or(props.map(|p| p.conductivity))
+                .ok_or(ContactError::OutOfRange {
+                    quantity: "fluid thermal conductivity k_f (W/(m·K))",
+                    value: f64::NAN,
+                    valid: "required for the inlet heating of a user fluid (Thermal::fluid_conductivity, in (0, 1e4] W/(m·K))",
+                })?;
+            inlet_heated(
+                g,
+                state,
+                hd(viscosity, pressure_viscosity),
+                viscosity,
+                viscosity_temperature,
+                k_f,
+            )
+        }
+        (Film::FromFluidInletHeated, _, Some(p)) => {
+            let eta = p.viscosity(state.inlet_temperature_celsius);
+            let k_f = th.fluid_conductivity.unwrap_or(p.conductivity);
+            inlet_heated(
+                g,
+                state,
+                hd(eta, p.pressure_viscosity),
+                eta,
+                p.viscosity_temperature(),
+                k_f,
+            )
+        }
+        (Film::FromFluidInletHeated, _, None) => Err(ContactError::OutOfRange {
+            quantity: "film thickness h (m)",
+            value: f64::NAN,
+            valid: "Film::FromFluidInletHeated needs a report fluid's η₀(θ); for a user fluid: Film::HamrockDowsonInletHeated",
+        }),
     }
+}
+
+/// The Hamrock–Dowson film `h` (m) at `state` reduced by inlet shear heating
+/// ([`inlet_heating_factor`] at the state's Hertz pressure, [`thermal_loading`]
+/// from η₀ `viscosity`, β_η `viscosity_temperature` and k_f `conductivity`).
+fn inlet_heated(
+    g: &traction_hertz::Geometry,
+    state: &OperatingState,
+    h: f64,
+    viscosity: f64,
+    viscosity_temperature: f64,
+    conductivity: f64,
+) -> Result<f64, ContactError> {
+    if h == 0.0 {
+        return Ok(0.0);
+    }
+    let speed = state.rolling_speed.abs();
+    let p0 = g.at_load(state.load)?.p0;
+    let l = thermal_loading(viscosity_temperature, viscosity, speed, conductivity);
+    Ok(h * inlet_heating_factor(l, p0 / g.e_prime, state.slip.abs() / speed)?)
 }
 
 /// The thermal model of one loaded state: temperature coefficients and the
@@ -807,6 +989,46 @@ mod tests {
         assert_eq!(h(0.0, 0.01, 2e-8, 1000.0), 0.0);
         // Order of magnitude of an EHL film at 20 m/s, 10 mPa·s: ~1 µm.
         assert!(h0 > 1e-7 && h0 < 3e-6, "{h0}");
+    }
+
+    /// Gupta et al.'s (1992) factor against the printed formula evaluated
+    /// independently of this code (double precision, Python: 19.65 is
+    /// L of the report fluids' η₀(73 °C) = 11.25 mPa·s, β_η = 0.030028 1/K,
+    /// k_f = 0.11 W/(m·K) at 80 m/s), its limits and its range.
+    #[test]
+    fn inlet_heating_factor_values_limits_and_errors() {
+        let l = thermal_loading(0.030028496668020384, 0.011248191075924476, 80.0, 0.11);
+        assert!((l / 19.651855606961732 - 1.0).abs() < 1e-14, "{l}");
+        for (l, pr, s, want) in [
+            (19.651855606961732, 0.0064, 0.0, 0.289755353272615),
+            (1.344, 0.006, 0.05, 0.697504858586546),
+            (39.2, 0.0064, 0.0, 0.18755929055361922),
+        ] {
+            let got = inlet_heating_factor(l, pr, s).unwrap();
+            assert!((got / want - 1.0).abs() < 1e-12, "{l} {pr} {s}: {got}");
+        }
+        // No loading, no reduction; less film with more loading or sliding.
+        assert_eq!(inlet_heating_factor(0.0, 0.006, 0.0).unwrap(), 1.0);
+        let mut last = 1.0;
+        for l in [0.1, 1.0, 10.0, 50.0, 100.0] {
+            let f = inlet_heating_factor(l, 0.006, 0.0).unwrap();
+            assert!(f < last && f > 0.0, "{l}: {f}");
+            assert!(inlet_heating_factor(l, 0.006, 0.5).unwrap() < f);
+            last = f;
+        }
+        // Beyond the positive numerator (L ≈ 124 at p_h/E' = 0.01), outside
+        // the slide-to-roll and pressure ranges, NaN: errors naming them.
+        for (l, pr, s, name) in [
+            (130.0, 0.01, 0.0, "thermal loading"),
+            (-1.0, 0.006, 0.0, "thermal loading"),
+            (f64::NAN, 0.006, 0.0, "thermal loading"),
+            (1.0, 0.006, 2.5, "slide-to-roll ratio"),
+            (1.0, 0.2, 0.0, "p_h/E'"),
+        ] {
+            let e = inlet_heating_factor(l, pr, s).unwrap_err().to_string();
+            assert!(e.contains(name), "{l} {pr} {s}: {e}");
+        }
+        assert!(inlet_heating_factor(120.0, 0.01, 0.0).unwrap() > 0.0);
     }
 
     /// x = A e^{−b x} has the exact solution x = W(A b)/b (Lambert W).

@@ -354,3 +354,101 @@ fn bad_thermal_input_names_the_quantity() {
     let e = build(f().with_spin_peak(0.05).unwrap(), base).unwrap_err();
     assert!(msg(e).contains("spin-peak"));
 }
+
+/// The inlet-heated film (`Film::FromFluidInletHeated`): the report fluid's
+/// Hamrock–Dowson film times Gupta et al.'s factor at its own η₀(θ), β_η and
+/// k_f (L = 19.65 at 80 m/s, 73 °C for the data file's 30.3 / 5.0 mPa·s and
+/// 0.11 W/(m·K), evaluated by hand: `thermal::inlet_heating_factor`'s unit
+/// test); a thinner film conducts its heat out at a lower rise; β_η = 0 is
+/// the isothermal inlet exactly.
+#[test]
+fn inlet_heated_film_of_a_report_fluid() {
+    let fluid = Fluid::tdf_88(EnvelopeRule::Clamp)
+        .and_then(|f| f.with_inlet_values(33.3, 0.051))
+        .unwrap();
+    let with = |film: Film| Thermal {
+        film,
+        ..Thermal::default()
+    };
+    let c = contact(fluid.clone(), Some(with(Film::FromFluidInletHeated)));
+    let s = OperatingState::builder()
+        .load(450.0)
+        .rolling_speed(80.0)
+        .side_slip(0.4)
+        .inlet_temperature_celsius(73.0)
+        .build()
+        .unwrap();
+    let g = c.geometry();
+    let h = |film: Film| thermal::film_thickness(&with(film), g, Some(&fluid), &s).unwrap();
+    let (iso, heated) = (h(Film::FromFluid), h(Film::FromFluidInletHeated));
+    let p0 = g.at_load(450.0).unwrap().p0;
+    let phi = thermal::inlet_heating_factor(19.651855606961732, p0 / g.e_prime, 0.0).unwrap();
+    assert!(
+        (heated / iso / phi - 1.0).abs() < 1e-9,
+        "{heated} {iso} {phi}"
+    );
+    assert!(phi > 0.2 && phi < 0.4, "{phi}");
+    let hd = Film::HamrockDowson {
+        viscosity: 0.011248191075924476,
+        pressure_viscosity: 3.0e-8,
+    };
+    assert!((h(hd) / iso - 1.0).abs() < 1e-12);
+    let off = Film::HamrockDowsonInletHeated {
+        viscosity: 0.011248191075924476,
+        pressure_viscosity: 3.0e-8,
+        viscosity_temperature: 0.0,
+    };
+    assert_eq!(h(off), h(hd));
+    let rise = |film: Film| {
+        contact(fluid.clone(), Some(with(film)))
+            .evaluate(&s)
+            .unwrap()
+            .temperature_rise
+    };
+    let (r_iso, r_heated) = (rise(Film::FromFluid), rise(Film::FromFluidInletHeated));
+    assert!(r_heated < r_iso && r_heated > 0.0, "{r_heated} {r_iso}");
+}
+
+/// Bad input of the inlet-heated films names the quantity: a user fluid has
+/// no η₀(θ) of its own, β_η outside [0, 1] 1/K, and a state beyond the
+/// factor's slide-to-roll range (|ΔU|/U ≤ 2).
+#[test]
+fn inlet_heated_film_bad_input() {
+    let (b1, b2) = bodies();
+    let build = |fluid: Fluid, film: Film| {
+        TractionContact::new(
+            &b1,
+            &b2,
+            fluid,
+            Options {
+                thermal: Some(Thermal {
+                    film,
+                    ..user_thermal(0.01)
+                }),
+                ..Options::default()
+            },
+        )
+    };
+    let f = || Fluid::constant(57.6, 0.0956).unwrap();
+    let e = build(f(), Film::FromFluidInletHeated).unwrap_err();
+    assert!(msg(e.clone()).contains("film thickness"), "{e}");
+    let bad = Film::HamrockDowsonInletHeated {
+        viscosity: 0.01,
+        pressure_viscosity: 2e-8,
+        viscosity_temperature: -0.01,
+    };
+    let e = build(f(), bad).unwrap_err();
+    assert!(msg(e.clone()).contains("temperature–viscosity"), "{e}");
+    let good = Film::HamrockDowsonInletHeated {
+        viscosity: 0.01,
+        pressure_viscosity: 2e-8,
+        viscosity_temperature: 0.03,
+    };
+    let c = build(f(), good).unwrap();
+    assert!(c.evaluate(&state(20.0, 0.2, 0.0, 0.0)).is_ok());
+    let e = c.evaluate(&state(20.0, 50.0, 0.0, 0.0)).unwrap_err();
+    assert!(
+        traction_contact::error_chain(&e).contains("slide-to-roll"),
+        "{e}"
+    );
+}

@@ -93,6 +93,13 @@ impl ThermalProperties {
         let s = (self.viscosity_100c / self.viscosity_40c).ln() / 60.0;
         self.viscosity_40c * (s * (theta_celsius - 40.0)).exp()
     }
+
+    /// Temperature–viscosity coefficient β_η = −d ln η/dθ of the inlet
+    /// viscosity, 1/K: the slope of [`Self::viscosity`]'s ln η, the same at
+    /// every θ (ln η linear in θ through the 40 °C and 100 °C values).
+    pub fn viscosity_temperature(&self) -> f64 {
+        (self.viscosity_40c / self.viscosity_100c).ln() / 60.0
+    }
 }
 
 #[cfg(test)]
@@ -113,6 +120,20 @@ mod tests {
             // The interpolation passes through both data points.
             assert!((p.viscosity(40.0) / p.viscosity_40c - 1.0).abs() < 1e-12);
             assert!((p.viscosity(100.0) / p.viscosity_100c - 1.0).abs() < 1e-12);
+        }
+    }
+
+    /// β_η is −d ln η/dθ of the interpolation: a central difference of
+    /// ln η at 70 °C (exact for ln η linear in θ, to rounding), and for the
+    /// data file's 30.3 / 5.0 mPa·s ln(6.06)/60 K = 0.03003 1/K (printed
+    /// digits).
+    #[test]
+    fn viscosity_temperature_is_the_slope_of_ln_viscosity() {
+        for n in [FluidName::Santotrac50, FluidName::Tdf88] {
+            let p = ThermalProperties::of(n).unwrap();
+            let fd = -(p.viscosity(71.0).ln() - p.viscosity(69.0).ln()) / 2.0;
+            assert!((p.viscosity_temperature() - fd).abs() < 1e-12, "{fd}");
+            assert!((p.viscosity_temperature() - 0.03003).abs() < 1e-5);
         }
     }
 }

@@ -10,7 +10,7 @@
 
 use rayon::prelude::*;
 use traction_contact::{
-    Body, Evaluation, Fluid, OperatingState, Options, Thermal, TractionContact,
+    Body, Evaluation, Film, Fluid, OperatingState, Options, Thermal, TractionContact,
 };
 use traction_fluids::FluidName;
 use traction_kinematics::tilted_disc_spin_per_speed;
@@ -53,7 +53,7 @@ fn high_speed(k: f64) -> Option<(Body, Body)> {
 
 /// A temperature law of μ and m for identification studies: ln μ(ΔT) − ln μ =
 /// −β_μ (ΔT − ΔT_peak) − (ΔT² − ΔT_peak²)/T*², ln m(ΔT) − ln m = −β_m ΔT
-/// (traction-contact `Thermal`).
+/// (traction-contact `Thermal`), with the film it is identified with.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Law {
     /// First-order coefficient β_μ, 1/K.
@@ -62,6 +62,10 @@ pub struct Law {
     pub mu_rise_scale: f64,
     /// Temperature coefficient β_m of the slope, 1/K.
     pub slope_coefficient: f64,
+    /// The film of the thermal model (`Film::FromFluid`: the report fluid's
+    /// own, as in every prediction; `Film::FromFluidInletHeated`: the same
+    /// reduced by inlet shear heating, docs/decisions/0027).
+    pub film: Film,
 }
 
 /// Options of every thermal prediction: the report's isothermal defaults plus
@@ -71,6 +75,7 @@ pub fn options(law: Option<Law>) -> Options {
     Options {
         classify_regime: false,
         thermal: Some(Thermal {
+            film: law.map_or(Film::FromFluid, |l| l.film),
             mu_coefficient: law.map(|l| l.mu_coefficient),
             mu_rise_scale: law.map(|l| l.mu_rise_scale),
             slope_coefficient: law.map(|l| l.slope_coefficient),

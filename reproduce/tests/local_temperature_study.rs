@@ -129,6 +129,7 @@ fn trace(name: &str, t_local: f64) -> Vec<[f64; 4]> {
                 mu_coefficient: 0.0,
                 mu_rise_scale: 1e12,
                 slope_coefficient: 0.0,
+                film: traction_contact::Film::FromFluid,
             }; 2],
         ));
         let th = state(None);

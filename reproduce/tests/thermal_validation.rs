@@ -97,6 +97,7 @@ fn appendix_vii_b_per_aspect_ratio() {
             mu_coefficient: 0.0,
             mu_rise_scale: 1e12,
             slope_coefficient: 0.0,
+            film: traction_contact::Film::FromFluid,
         }; 2],
     ))
     .unwrap();
@@ -255,12 +256,14 @@ fn santotrac_rise_scale_is_the_identified_minimum_and_the_first_order_law_is_not
             mu_coefficient: b,
             mu_rise_scale: t,
             slope_coefficient: 0.0,
+            film: traction_contact::Film::FromFluid,
         };
         // TDF-88 at its own identified value.
         let tdf = thermal::Law {
             mu_coefficient: 0.0,
             mu_rise_scale: 575.0,
             slope_coefficient: 0.0,
+            film: traction_contact::Film::FromFluid,
         };
         Some([l, tdf])
     };
@@ -292,11 +295,13 @@ fn a_temperature_coefficient_of_the_slope_makes_the_spin_traces_worse() {
                 mu_coefficient: 0.0,
                 mu_rise_scale: 480.0,
                 slope_coefficient: beta_m,
+                film: traction_contact::Film::FromFluid,
             },
             thermal::Law {
                 mu_coefficient: 0.0,
                 mu_rise_scale: 575.0,
                 slope_coefficient: beta_m,
+                film: traction_contact::Film::FromFluid,
             },
         ])
     };
@@ -416,4 +421,72 @@ fn the_second_order_law_bounds_the_rise_where_the_first_order_law_runs_away() {
             Err(ContactError::Thermal { .. })
         ));
     }
+}
+
+/// Sum of squared deviations of TDF-88's identification data for a law:
+/// trace 79100403 (80 m/s, 18 points, J5 in μ_s) and its Appendix VII-E
+/// peaks (21 without, 32 with spin, in the zero-side-slip μ₀), the
+/// objective on which its T* is identified (docs/decisions/0023).
+fn tdf_joint_sum_of_squares(law: Option<[thermal::Law; 2]>) -> f64 {
+    let trace = vi_trace_rms(law, "79100403");
+    let peaks = thermal::appendix_vii_e(law).unwrap();
+    let vii_e: f64 = peaks
+        .iter()
+        .filter(|p| p.point.fluid.contains("TDF") && !p.is_reference)
+        .map(|p| ((p.thermal - p.point.mu) / p.reference_mu).powi(2))
+        .sum();
+    18.0 * trace * trace + vii_e
+}
+
+/// Inlet shear heating of the film (Gupta et al. 1992's reduction factor,
+/// `Film::FromFluidInletHeated`; docs/decisions/0027), measured and not
+/// adopted. It thins the 80 m/s films far more than the 20 m/s ones
+/// (φ_T = 0.19 on 79072704 at 50 °C, 0.29 on 79100403 at 73 °C, 0.70 at
+/// 20 m/s, 70 °C), so both T* fall when re-identified by the same
+/// procedure: Santotrac 50 150 K on 79072704 (RMS 0.0471 / 0.0444 /
+/// 0.0495 at 140 / 150 / 160 K: as good as 480 K without it), TDF-88
+/// 235 K jointly on 79100403 and its VII-E peaks (Σr² 0.3085 / 0.2959 /
+/// 0.3216 at 200 / 235 / 300 K, against 0.515 at 575 K without it).
+/// TDF-88's data fit better (79100403 0.126 → 0.104), but the smaller
+/// Santotrac 50 T* over-heats its 20 m/s traces: VII-A 0.0221, beyond the
+/// goal 0.0138 (1.1 × isothermal), and App. VI (0.0969) stays above its
+/// goal 0.091. Margins: the grid's minima are asserted as minima; the goals
+/// are missed by 60 % (VII-A) and 6 % (App. VI), beyond the rheology's
+/// accuracy (1e-4 in J).
+#[test]
+fn inlet_shear_heating_re_identified_misses_the_goals() {
+    use traction_contact::Film;
+    let law = |s: f64, t: f64| {
+        let l = |x: f64| thermal::Law {
+            mu_coefficient: 0.0,
+            mu_rise_scale: x,
+            slope_coefficient: 0.0,
+            film: Film::FromFluidInletHeated,
+        };
+        Some([l(s), l(t)])
+    };
+    let at = |t: f64| vi_trace_rms(law(t, 235.0), "79072704");
+    let (lo, best, hi) = (at(140.0), at(150.0), at(160.0));
+    println!("inlet heating, 79072704 at T* = 140, 150, 160 K: {lo:.4} {best:.4} {hi:.4}");
+    assert!(best < lo && best < hi && best < 0.06, "{lo} {best} {hi}");
+    let joint = |t: f64| tdf_joint_sum_of_squares(law(150.0, t));
+    let (lo, best, hi) = (joint(200.0), joint(235.0), joint(300.0));
+    println!("inlet heating, TDF-88 joint Σr² at T* = 200, 235, 300 K: {lo:.4} {best:.4} {hi:.4}");
+    assert!(best < lo && best < hi, "{lo} {best} {hi}");
+    // Without inlet heating the same objective is 0.515 at 575 K.
+    let plain = tdf_joint_sum_of_squares(None);
+    assert!(best < 0.7 * plain, "{best} {plain}");
+    let identified = law(150.0, 235.0);
+    let (a, tdf80) = (vii_a_rms(identified), vi_trace_rms(identified, "79100403"));
+    println!("inlet heating: VII-A {a:.4}, 79100403 {tdf80:.4}");
+    assert!(a > 0.0138 && tdf80 < 0.11, "{a} {tdf80}");
+    use traction_reproduce::data::{APPENDIX_VI, DataTable};
+    let vi = DataTable::parse("appendix_vi_spin_traces.csv", APPENDIX_VI).unwrap();
+    let (cfy, cms) = (vi.col("FyFz_exp").unwrap(), vi.col("mu_spin").unwrap());
+    let meas: Vec<f64> = (0..vi.rows.len())
+        .map(|i| vi.num(i, cfy).unwrap() / vi.num(i, cms).unwrap())
+        .collect();
+    let all = rms(&thermal::appendix_vi(identified).unwrap(), &meas);
+    println!("inlet heating: App. VI {all:.4}");
+    assert!(all > 0.091 && all < 0.0994, "{all}");
 }
