@@ -361,8 +361,8 @@ impl Accuracy {
     /// A fixed (non-adaptive) discretisation for this target, for
     /// [`reference::elastic_plastic`]: panels ⌈10·√(1e-3/tol)⌉ of 8 Gauss
     /// points and [`Accuracy::s_step`]. [`evaluate`] uses an adaptive Y
-    /// quadrature (4 points per panel) instead, which is 3–8× cheaper for
-    /// moderate spin at the same verified accuracy.
+    /// quadrature (Lobatto–Kronrod panels) instead, which is 3–8× cheaper
+    /// for moderate spin at the same verified accuracy.
     pub fn resolution(&self) -> Resolution {
         // Calibrated by the convergence study (rheology/tests/convergence.rs):
         // the error is dominated by the Y quadrature across strips where the
@@ -385,10 +385,11 @@ impl Accuracy {
 /// when J3 = 0 and gy = 1 (exact; ΔX only moves the torque's reference
 /// point, adding ΔX·J5/√k), and the rigid/plastic solution when
 /// max|J| > [`J_RIGID`]. Otherwise it integrates strips with adaptive panels
-/// in Y (4 Gauss points each, starting from panels graded towards the spin
-/// pole's strip, refinement blended so that the outputs are continuous in
-/// the inputs; for J1 = 0 only Y ≥ 0, the strips being mirror images about
-/// Y = 0) and the s-step [`Accuracy::s_step`], doubled on
+/// in Y (a 5-point Gauss–Lobatto rule and its 9-point Kronrod extension
+/// each, starting from panels graded towards the spin pole's strip,
+/// refinement blended so that the outputs are continuous in the inputs; for
+/// J1 = 0 only Y ≥ 0, the strips being mirror images about Y = 0) and the
+/// s-step [`Accuracy::s_step`], doubled on
 /// plastic segments that stay non-stiff (κ·h below the RK4 stability
 /// margin) at the doubled step; stiff segments on which the slip direction
 /// turns slowly take exponential steps of up to 0.4·√(tol/1e-3) instead
@@ -406,7 +407,7 @@ pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, Rh
                 (j4, j5, j6)
             } else {
                 let h = acc.s_step();
-                return adaptive(inp, 4, acc.tol, h, SMOOTH_STEP_FACTOR * h);
+                return adaptive(inp, acc.tol, h, SMOOTH_STEP_FACTOR * h);
             }
         }
         Model::RigidPlastic => return rigid_plastic(inp, acc),
@@ -439,7 +440,6 @@ const SMOOTH_STEP_FACTOR: f64 = 2.0;
 
 fn adaptive(
     inp: &Inputs,
-    n: usize,
     tol: f64,
     s_step: f64,
     s_step_smooth: f64,
@@ -452,7 +452,7 @@ fn adaptive(
     let sc = ep::Scaled::of(inp);
     let h = s_step.clamp(1e-4, 0.5);
     let hs = s_step_smooth.clamp(h, 1.0);
-    let (j4, j5, j6) = ep::solve_adaptive(&sc, n.clamp(2, quad::MAX_GL), tol, h, hs);
+    let (j4, j5, j6) = ep::solve_adaptive(&sc, tol, h, hs);
     Ok(finish(inp, j4, j5, j6))
 }
 

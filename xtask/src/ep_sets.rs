@@ -9,7 +9,9 @@
 //! |J1|, |J2| ≤ 5, J3 ∈ [5, 26]), 80 wide-range ones (k 0.05–20, |J1|
 //! 0.1–32, |J2| 0.03–3, |J3| 0.3–316 log-uniform with random signs, every
 //! third with gy 0.3–3) and 60 others (k 0.2–5, |J1|, |J2| ≤ 3,
-//! |J3| ∈ [0.5, 26]), from a fixed seed.
+//! |J3| ∈ [0.5, 26]), from a fixed seed; `refs FILE SEED` and
+//! `errs FILE SEED` draw the 300 random cases from another seed (more
+//! cases of the same distributions for a change of the adaptive rules).
 #![allow(clippy::unwrap_used)]
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate};
@@ -26,12 +28,22 @@ const SETS: [(&str, usize, usize); 4] = [
 
 const TOLS: [f64; 3] = [1e-2, 1e-3, 1e-4];
 
-fn cases() -> Vec<Inputs> {
+/// The random sets' seed unless `refs`/`errs` name another.
+const SEED: u64 = 4242;
+
+/// The optional SEED after `refs FILE` / `errs FILE`.
+fn seed(a: &[String]) -> Result<u64, String> {
+    a.get(2).map_or(Ok(SEED), |t| {
+        t.parse().map_err(|_| format!("bad SEED `{t}`"))
+    })
+}
+
+fn cases(seed: u64) -> Vec<Inputs> {
     let mut v: Vec<Inputs> = ELASTIC_PLASTIC
         .iter()
         .map(|c| Inputs::new(c.k, c.j[0], c.j[1], c.j[2]).unwrap())
         .collect();
-    let mut r = Lcg::new(4242);
+    let mut r = Lcg::new(seed);
     let sign = |r: &mut Lcg| if r.unit() < 0.5 { -1.0 } else { 1.0 };
     for _ in 0..160 {
         let k = [0.5, 1.0, 2.0, 5.0][(r.unit() * 4.0) as usize % 4];
@@ -64,8 +76,8 @@ fn cases() -> Vec<Inputs> {
 /// Runs the command with the command line's arguments after `ep-sets`.
 pub fn run(a: &[String]) -> Result<(), String> {
     match a.first().map(String::as_str) {
-        Some("refs") => refs(a.get(1).ok_or("refs needs FILE")?),
-        Some("errs") => errs(a.get(1).ok_or("errs needs FILE")?),
+        Some("refs") => refs(a.get(1).ok_or("refs needs FILE")?, seed(a)?),
+        Some("errs") => errs(a.get(1).ok_or("errs needs FILE")?, seed(a)?),
         Some("bits") => {
             let tols = match a.get(1) {
                 Some(t) => vec![t.parse().map_err(|_| format!("bad TOL `{t}`"))?],
@@ -77,27 +89,27 @@ pub fn run(a: &[String]) -> Result<(), String> {
     }
 }
 
-fn refs(file: &str) -> Result<(), String> {
+fn refs(file: &str, seed: u64) -> Result<(), String> {
     let res = Resolution {
         y_panels: 128,
         y_points: 8,
         s_step: 0.004,
     };
     let mut out = String::new();
-    for inp in cases() {
+    for inp in cases(seed) {
         let o = elastic_plastic(&inp, &res).map_err(|e| e.to_string())?;
         out += &format!("{:e} {:e} {:e}\n", o.j4, o.j5, o.j6);
     }
     std::fs::write(file, out).map_err(|e| format!("{file}: {e}"))
 }
 
-fn errs(file: &str) -> Result<(), String> {
+fn errs(file: &str, seed: u64) -> Result<(), String> {
     let text = std::fs::read_to_string(file).map_err(|e| format!("{file}: {e}"))?;
     let r: Vec<Vec<f64>> = text
         .lines()
         .map(|l| l.split_whitespace().map(|x| x.parse().unwrap()).collect())
         .collect();
-    let cs = cases();
+    let cs = cases(seed);
     if r.len() != cs.len() {
         return Err(format!(
             "{file}: {} references for {} cases",
@@ -131,7 +143,7 @@ fn errs(file: &str) -> Result<(), String> {
 fn bits(tols: &[f64]) -> Result<(), String> {
     for &tol in tols {
         let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
-        for (i, inp) in cases().iter().enumerate() {
+        for (i, inp) in cases(SEED).iter().enumerate() {
             let o = evaluate(inp, Model::ElasticPlastic, acc).map_err(|e| e.to_string())?;
             let (a, b, c) = (o.j4.to_bits(), o.j5.to_bits(), o.j6.to_bits());
             println!("{tol:e} {i} {a:016x} {b:016x} {c:016x}");

@@ -221,14 +221,17 @@ impl Strip {
 
     /// [`Strip::integrate`] with exponential steps of at most `etd_step`
     /// on the stiff isotropic plastic segments where the slip direction
-    /// turns slowly (see `Strip::plastic`); RK4 as in [`Strip::integrate`]
-    /// elsewhere.
+    /// turns slowly (see `Strip::plastic`), RK4 as in [`Strip::integrate`]
+    /// elsewhere; and the strip's flow topology: twice the number of
+    /// unloadings, plus 1 where it ends elastic (the strip sums have a kink
+    /// in Y where it changes: a plastic segment or an unloading appears or
+    /// vanishes).
     pub(crate) fn integrate_etd(
         &self,
         s_step: f64,
         s_step_smooth: f64,
         etd_step: f64,
-    ) -> StripSums {
+    ) -> (StripSums, u32) {
         self.integrate_with((s_step, s_step_smooth, etd_step), &mut |_| {})
     }
 
@@ -240,18 +243,23 @@ impl Strip {
         s_step_smooth: f64,
         rec: &mut impl FnMut(Event),
     ) -> StripSums {
-        self.integrate_with((s_step, s_step_smooth, 0.0), rec)
+        self.integrate_with((s_step, s_step_smooth, 0.0), rec).0
     }
 
     /// The strip from the inlet to the outlet with the plastic steps
     /// (s-step, longer s-step on non-stiff segments, exponential step or 0
     /// for none).
-    fn integrate_with(&self, steps: (f64, f64, f64), rec: &mut impl FnMut(Event)) -> StripSums {
+    fn integrate_with(
+        &self,
+        steps: (f64, f64, f64),
+        rec: &mut impl FnMut(Event),
+    ) -> (StripSums, u32) {
         let c = self.c;
         let mut acc = StripSums::default();
         if c <= 0.0 {
-            return acc;
+            return (acc, 1);
         }
+        let mut ends_elastic = 0;
         let mut x0 = -c;
         let mut z0 = (0.0, 0.0);
         let mut switches = 0;
@@ -260,6 +268,7 @@ impl Strip {
             acc += self.el_sums(x0, z0, xy);
             rec(Event::Elastic { x0, z0, x1: xy });
             if xy >= c * (1.0 - 1e-15) {
+                ends_elastic = 1;
                 break;
             }
             let z = self.z_el(x0, z0, xy);
@@ -285,7 +294,7 @@ impl Strip {
                 }
             }
         }
-        acc
+        (acc, 2 * switches as u32 + ends_elastic)
     }
 }
 

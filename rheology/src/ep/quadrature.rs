@@ -163,13 +163,21 @@ fn smooth_step(t: f64) -> f64 {
 
 /// First graded panel edge from the spin pole's strip, in φ: POLE_GRADING/|J3|
 /// (the further edges at POLE_GRADING_GROWTH times the previous distance
-/// from it). Measured, with the distances doubling, on 224 cases of
-/// the convergence set and 600 high-spin cases (k ∈ {0.5, 1, 2, 5},
-/// |J1|, |J2| ≤ 5, J3 ∈ [5, 26]) against 96–128-panel references: 4, 8
-/// and 16 give a worst error/tol of 0.48/0.48/0.50 (convergence set) and
-/// 0.35/0.33/0.47 (high spin) over tol = 1e-2…1e-4 at +17/+6/+3 % and
-/// +10/+8/+9 % instructions; 8 is the compromise.
-const POLE_GRADING: f64 = 8.0;
+/// from it). With the former rule (4-point Gauss panels checked against
+/// their halves, distances doubling) 4, 8 and 16 gave a worst error/tol of
+/// 0.48/0.48/0.50 on 224 cases and 0.35/0.33/0.47 on 600 high-spin ones at
+/// +17/+6/+3 % and +10/+8/+9 % instructions (8 was chosen). With the
+/// Lobatto–Kronrod panels of [`lobatto_kronrod_in_phi`], against 128-panel
+/// references on 1842 cases (`cargo xtask ep-sets` with six seeds), the
+/// total strips at tol 1e-2/1e-3/1e-4 are 77.0 k/103.8 k/181.0 k with 3,
+/// 81.8 k/101.6 k/183.5 k with 2, 73.9 k/110.7 k/187.8 k with 4 and
+/// 70.0 k/134.4 k/212.8 k with 8, the worst error/tol ≤ 0.22 at 1e-2 and
+/// 1e-3 for all. Instructions on the bench set at 1e-3: 3 halves the worst
+/// case (8: cases a, b, c 1.25 M/949 k/953 k; 3: 503 k/589 k/490 k; 2: a
+/// +60 %); on 307 random cases in total 8 is 21 % and 4 % cheaper than 3
+/// at 1e-2 and 1e-4 (its strips lie farther from the pole, where they are
+/// cheaper) and 3 % dearer at 1e-3 (docs/decisions/0074).
+const POLE_GRADING: f64 = 3.0;
 
 /// Growth of the initial panel edges' distance from the spin pole's strip
 /// beyond the first (POLE_GRADING/|J3|, the panel that holds the change of
@@ -181,7 +189,11 @@ const POLE_GRADING: f64 = 8.0;
 /// worst error/tol at tol = 1e-2, 1e-3, 1e-4 is the same for 2 (before),
 /// 4 and 8 on every set, while 4 takes 11–25 % fewer strips than 2 at
 /// 1e-2/1e-3 and 7–8 % at 1e-4 (8: a further 0–11 % on the wide set only);
-/// 4 keeps some grading for very large |J3| (docs/decisions/0065).
+/// 4 keeps some grading for very large |J3| (docs/decisions/0065). With the
+/// Lobatto–Kronrod panels and POLE_GRADING = 3, growth 6 takes 10 % fewer
+/// strips at 1e-2 but 8 % more at 1e-4 (1842 cases), 3 more at 1e-2 and
+/// 1e-3 (first edge 4/|J3|); in instructions over 307 cases 6 and 8
+/// differ from 4 by −0.5 % and +2 % (docs/decisions/0074).
 const POLE_GRADING_GROWTH: f64 = 4.0;
 
 /// Largest number of initial panel edges: at most MAX_BREAKS/2 − 2 graded
@@ -248,9 +260,10 @@ pub(crate) fn graded_breaks(pp: f64, w0: f64, growth: f64, out: &mut [f64; MAX_B
     n + 1
 }
 
-/// Elastic/plastic (J4, J5, J6), adaptive in Y from the panels of
-/// [`initial_breaks`]; s-step `s_step`, or `s_step_smooth` (≥ `s_step`) on
-/// plastic segments that are non-stiff at it, exponential steps of up to
+/// Elastic/plastic (J4, J5, J6) by Lobatto–Kronrod panels in Y
+/// ([`lobatto_kronrod_in_phi`]) from the panels of [`initial_breaks`];
+/// s-step `s_step`, or `s_step_smooth` (≥ `s_step`) on plastic segments
+/// that are non-stiff at it, exponential steps of up to
 /// [`ETD_STEP`]·√(tol/1e-3) on stiff segments where the slip direction
 /// turns slowly ([`Strip::integrate_etd`]).
 ///
@@ -266,7 +279,6 @@ pub(crate) fn graded_breaks(pp: f64, w0: f64, growth: f64, out: &mut [f64; MAX_B
 /// changes), so it stays continuous at J1 = 0.
 pub(crate) fn solve_adaptive(
     sc: &Scaled,
-    n: usize,
     tol: f64,
     s_step: f64,
     s_step_smooth: f64,
@@ -280,14 +292,158 @@ pub(crate) fn solve_adaptive(
     } else {
         0.0
     };
-    let strip = |s: &Strip| s.integrate_etd(s_step, s_step_smooth, etd_step);
+    let strip = |y: f64| {
+        let (st, topology) = sc.strip(y).integrate_etd(s_step, s_step_smooth, etd_step);
+        ([st.ix, st.iy, st.ixy], topology)
+    };
+    let k_dx = (sc.k, sc.dx);
     if sc.a0 == 0.0
         && let Some(i0) = breaks[..nb].iter().position(|&b| b == 0.0)
     {
-        let (_, j5, j6) = contact_integral_adaptive_at(sc, &breaks[i0..nb], n, tol, 10, strip);
+        let (_, j5, j6) = lobatto_kronrod_in_phi(&breaks[i0..nb], tol, MAX_DEPTH, k_dx, strip);
         return (0.0, 2.0 * j5, 2.0 * j6);
     }
-    contact_integral_adaptive_at(sc, &breaks[..nb], n, tol, 10, strip)
+    lobatto_kronrod_in_phi(&breaks[..nb], tol, MAX_DEPTH, k_dx, strip)
+}
+
+/// Deepest refinement of an initial panel in [`solve_adaptive`].
+const MAX_DEPTH: u32 = 10;
+
+/// Interior nodes of the 5-point Gauss–Lobatto rule (0, ±√(3/7), degree 7)
+/// and of its 9-point Kronrod extension (adding ±0.3410, ±0.8904; degree
+/// 13) on [−1, 1], as (node, Kronrod weight, Lobatto weight); both rules
+/// also use the ends ±1 with the weights [`LK_ENDS`]. The Kronrod nodes
+/// are the real roots that make the 9-point rule exact to degree 13
+/// (computed to 50 digits by Newton on the moment equations; the weights
+/// are positive).
+const LK_NODES: [(f64, f64, f64); 7] = [
+    (-0.890_405_527_512_668_8, 0.179_262_699_553_207_36, 0.0),
+    (
+        -0.654_653_670_707_977_2,
+        0.283_978_778_048_121_1,
+        49.0 / 90.0,
+    ),
+    (-0.340_982_265_910_992_97, 0.334_233_739_816_417_7, 0.0),
+    (0.0, 0.343_762_087_210_363_07, 32.0 / 45.0),
+    (0.340_982_265_910_992_97, 0.334_233_739_816_417_7, 0.0),
+    (
+        0.654_653_670_707_977_2,
+        0.283_978_778_048_121_1,
+        49.0 / 90.0,
+    ),
+    (0.890_405_527_512_668_8, 0.179_262_699_553_207_36, 0.0),
+];
+/// Weights of the ends ±1: (Kronrod, Lobatto).
+const LK_ENDS: (f64, f64) = (0.030_643_738_977_072_31, 0.1);
+
+/// Share of the allowed change ([`lobatto_kronrod_in_phi`]) for a panel
+/// whose strips do not all have the same flow topology (a kink of the strip
+/// sums inside it, where the two rules can agree by chance). With 1, a
+/// panel holding the vanishing of an unloading (k = 0.163,
+/// J = (−0.231, −0.204, −0.895)) was accepted at 0.88 of the allowed change
+/// and the result was off by 1.08·tol at tol 1e-4 (with 0.7: 0.92·tol,
+/// first edge at 8/|J3|); 0.25 takes 12–27 % more strips than 0.5.
+const ACCEPT_KINK: f64 = 0.5;
+
+/// A panel: (lo, hi, integrand and topology at lo, at hi, depth, weight of
+/// its value in the result).
+type Panel = (f64, f64, ([f64; 4], u32), ([f64; 4], u32), u32, f64);
+
+/// Adaptive Lobatto–Kronrod panels in φ (Y = sin φ) from the sorted edges
+/// `breaks` (from −π/2 to π/2); `strip(Y)` gives a strip's
+/// (∫Zx, ∫Zy, ∫Zy·X) and its flow topology (any number that changes where
+/// the strip sums have a kink in Y). A panel's 9-point Kronrod value is kept
+/// when it and the 5-point Lobatto value differ by less than the allowed
+/// change tol·width/π in J4, J5 and J6 (ACCEPT_KINK times that where the
+/// panel's strips differ in topology); otherwise both halves are refined,
+/// blended in between (the halves' share a C¹ step from 1 to 2 times the
+/// allowed change), so that a decision adds no jump in the inputs. A change
+/// of the topology gate moves the result continuously too: it flips where a
+/// kink crosses a panel's end (its effect on the panel's value vanishing
+/// there) or appears with no amplitude. Both rules use the panel's ends:
+/// neighbouring panels share their end strips and a panel's halves its
+/// ends and midpoint, so a panel costs 7 new strips (the strips at Y = ±1
+/// are empty), 12 with the former rule (4-point Gauss–Legendre checked
+/// against its halves, [`adaptive_in_phi`]), whose 8-point value was far
+/// more accurate than needed (docs/decisions/0074).
+pub(crate) fn lobatto_kronrod_in_phi(
+    breaks: &[f64],
+    tol: f64,
+    max_depth: u32,
+    (k, dx): (f64, f64),
+    mut strip: impl FnMut(f64) -> ([f64; 3], u32),
+) -> (f64, f64, f64) {
+    // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx), and the topology.
+    let mut f = |phi: f64| -> ([f64; 4], u32) {
+        let (y, cphi) = phi.sin_cos();
+        if cphi <= 0.0 || phi.abs() >= FRAC_PI_2 {
+            return ([0.0; 4], 0);
+        }
+        let (st, t) = strip(y);
+        (
+            [cphi * st[0], cphi * st[1], cphi * st[2], cphi * y * st[0]],
+            t,
+        )
+    };
+    let mut total = [0.0; 4];
+    let mut stack: Vec<Panel> = Vec::with_capacity(32);
+    let mut flo = f(breaks[0]);
+    for w in breaks.windows(2) {
+        let fhi = f(w[1]);
+        if w[1] > w[0] {
+            stack.push((w[0], w[1], flo, fhi, 0, 1.0));
+        }
+        flo = fhi;
+    }
+    while let Some((lo, hi, fl, fh, depth, weight)) = stack.pop() {
+        let (m, hw) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+        let (mut kv, mut lv) = ([0.0; 4], [0.0; 4]);
+        for i in 0..4 {
+            kv[i] = LK_ENDS.0 * (fl.0[i] + fh.0[i]);
+            lv[i] = LK_ENDS.1 * (fl.0[i] + fh.0[i]);
+        }
+        // The strips at Y = ±1 (zero width) count as any topology.
+        let ends = [(fl.1, lo), (fh.1, hi)];
+        let mut topo = ends.iter().find(|e| e.1.abs() < FRAC_PI_2).map(|e| e.0);
+        let mut kink = fl.1 != fh.1 && lo.abs() < FRAC_PI_2 && hi.abs() < FRAC_PI_2;
+        let mut fm = fl;
+        for &(t, wk, wl) in &LK_NODES {
+            let v = f(m + hw * t);
+            kink |= *topo.get_or_insert(v.1) != v.1;
+            if t == 0.0 {
+                fm = v;
+            }
+            for i in 0..4 {
+                kv[i] += wk * v.0[i];
+                lv[i] += wl * v.0[i];
+            }
+        }
+        let mut d = [0.0; 4];
+        for i in 0..4 {
+            kv[i] *= hw;
+            d[i] = kv[i] - hw * lv[i];
+        }
+        let (e4, e5, e6) = to_j(k, dx, &d);
+        let err = e4.abs().max(e5.abs()).max(e6.abs());
+        let share = if kink { ACCEPT_KINK } else { 1.0 };
+        let allowed = share * tol * (hi - lo) / PI;
+        let refine = if depth >= max_depth || err.is_nan() {
+            0.0
+        } else {
+            smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
+        };
+        if refine < 1.0 {
+            let w = weight * (1.0 - refine);
+            for i in 0..4 {
+                total[i] += w * kv[i];
+            }
+        }
+        if refine > 0.0 {
+            stack.push((lo, m, fl, fm, depth + 1, weight * refine));
+            stack.push((m, hi, fm, fh, depth + 1, weight * refine));
+        }
+    }
+    to_j(k, dx, &total)
 }
 
 /// Exponential step (`Strip::etd`) on the stiff, slowly turning plastic
