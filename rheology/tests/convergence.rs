@@ -103,6 +103,12 @@ fn accuracy_parameter_is_met() {
         (0.5, 1.01, -2.508, 7.798),
         (1.0, 1.206, 0.0165, 16.47),
         (1.0, -1.26, -3.40, 25.57),
+        // Small k, moderate spin with large side slip: the former 4-point
+        // Gauss panels checked against their halves were off by 1.89·tol at
+        // 1e-4 and 1.12·tol at 1e-3 (the two worst of 20 000 random cases,
+        // k 0.2–5, |J1|, |J2| ≤ 5, |J3| ≤ 26, against tol 1e-6).
+        (0.279819, 1.38857, 4.33899, 4.76098),
+        (0.648586, 3.82307, -3.3411, -6.50996),
     ];
     for &(k, j1, j2, j3) in &cases {
         let i = Inputs::new(k, j1, j2, j3).unwrap();
