@@ -347,20 +347,15 @@ impl Strip {
         // The slip direction v = (a, vy/gy) turns at
         // α' = a·(q2/gy)·c·cos s/(a² + (vy/gy)²).
         let (vy0, vy1, q2) = (vy0 / self.gy, vy1 / self.gy, self.q2 / self.gy);
-        let (vmin, cmax) = if (vy0 < 0.0) != (vy1 < 0.0) {
-            (0.0, 1.0)
-        } else {
-            (vy0.abs().min(vy1.abs()), cs0.max(cs1))
-        };
+        // Selects rather than branches (the crossing of vy = 0 is not
+        // predictable along a strip near the pole).
+        let cross = (vy0 < 0.0) != (vy1 < 0.0);
+        let vmin = if cross { 0.0 } else { vy0.abs().min(vy1.abs()) };
+        let cmax = if cross { 1.0 } else { cs0.max(cs1) };
         let num = (self.a * q2 * self.c).abs() * cmax * h;
         let den = a2 + vmin * vmin;
-        let ah = if num == 0.0 {
-            0.0
-        } else if den > 0.0 {
-            num / den
-        } else {
-            f64::INFINITY
-        };
+        // num ≥ 0 and den ≥ 0: num/den is +∞ where den = 0 < num.
+        let ah = if num == 0.0 { 0.0 } else { num / den };
         (kh, ah)
     }
 
@@ -524,6 +519,8 @@ impl Strip {
         } else {
             GRADED_KAPPA_H / ((2.0 / 3.0) * self.a.hypot(self.vy(self.c * sn))).max(RATE_FLOOR)
         };
+        // The graded cap of step i: h_first·2^(min(i − 1, 30)) (exact).
+        let mut h_grade = h_first;
         loop {
             // Non-stiff segments: nsteps equal steps. Otherwise steps of at
             // most h, shortened where the slip direction turns by more than
@@ -556,7 +553,10 @@ impl Strip {
                 // at yield relaxes within ~1/κ, which RK4 at κ·h ≈ 2 resolves
                 // poorly; start at κ·h = GRADED_KAPPA_H and double.
                 if i < GRADED_STEPS {
-                    hv = hv.min(h_first * f64::from(1u32 << (i - 1).min(30)));
+                    hv = hv.min(h_grade);
+                    if i <= 30 {
+                        h_grade *= 2.0;
+                    }
                 }
                 // The bounds just computed hold for the step unless it was
                 // shortened (`advance` then computes them for the new step).
