@@ -29,7 +29,9 @@
 //!   (used by `evaluate`, not by the fixed-resolution reference) stiff
 //!   isotropic segments on which the slip direction turns slowly take
 //!   exponential steps instead (ETDRK4 on the Riccati equation of
-//!   tan((α − θ)/2), `Strip::etd`), several s-steps long;
+//!   tan((α − θ)/2), `Strip::etd`), several s-steps long, and where κ·h ≤ 1
+//!   a step near vy = 0 is the one over which α turns by exactly 3·s_step
+//!   (`Strip::turn_step`, closed form) rather than the bound's shorter one;
 //! * elastic unloading where g = (v·n)·cos s + (3/2)·sin s turns negative
 //!   (v·n < dL/dX), located inside the step on the integrated g (the root
 //!   of g's cubic Hermite interpolant over the step as the first trial
