@@ -673,7 +673,10 @@ impl Strip {
         if allow_unload && q.cs > OUTLET_CS {
             let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
             if g1 < 0.0 {
-                let best = self.locate_unload::<ISO>(p, q, h, g1, a_h, cache);
+                // Copies for the out-of-line call, so that p and q need not
+                // live in memory on the hot path.
+                let (p0, q0) = (*p, *q);
+                let best = self.locate_unload::<ISO>(&p0, &q0, h, g1, a_h, cache);
                 *acc += best.acc;
                 let l = 1.5 * self.c * best.cs;
                 rec(Event::Plastic {
