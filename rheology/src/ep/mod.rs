@@ -29,7 +29,9 @@
 //!   (used by `evaluate`, not by the fixed-resolution reference) stiff
 //!   isotropic segments on which the slip direction turns slowly take
 //!   exponential steps instead (ETDRK4 on the Riccati equation of
-//!   tan((α − θ)/2), `Strip::etd`), several s-steps long;
+//!   tan((α − θ)/2), `Strip::etd`), several s-steps long, and where κ·h ≤ 1
+//!   a step near vy = 0 is the one over which α turns by exactly 3·s_step
+//!   (`Strip::turn_step`, closed form) rather than the bound's shorter one;
 //! * elastic unloading where g = (v·n)·cos s + (3/2)·sin s turns negative
 //!   (v·n < dL/dX), located inside the step on the integrated g (the root
 //!   of g's cubic Hermite interpolant over the step as the first trial
@@ -222,17 +224,18 @@ impl Strip {
     /// [`Strip::integrate`] with exponential steps of at most `etd_step`
     /// on the stiff isotropic plastic segments where the slip direction
     /// turns slowly (see `Strip::plastic`), RK4 as in [`Strip::integrate`]
-    /// elsewhere; and the strip's flow topology: twice the number of
-    /// unloadings, plus 1 where it ends elastic (the strip sums have a kink
-    /// in Y where it changes: a plastic segment or an unloading appears or
-    /// vanishes).
+    /// elsewhere, steps near vy = 0 set by the exact turn of the slip
+    /// direction where κ·h is small (`Strip::turn_step`); and the strip's
+    /// flow topology: twice the number of unloadings, plus 1 where it ends
+    /// elastic (the strip sums have a kink in Y where it changes: a plastic
+    /// segment or an unloading appears or vanishes).
     pub(crate) fn integrate_etd(
         &self,
         s_step: f64,
         s_step_smooth: f64,
         etd_step: f64,
     ) -> (StripSums, u32) {
-        self.integrate_with((s_step, s_step_smooth, etd_step), &mut |_| {})
+        self.integrate_with((s_step, s_step_smooth, etd_step, true), &mut |_| {})
     }
 
     /// [`Strip::integrate`], reporting the elastic segments and the plastic
@@ -243,15 +246,17 @@ impl Strip {
         s_step_smooth: f64,
         rec: &mut impl FnMut(Event),
     ) -> StripSums {
-        self.integrate_with((s_step, s_step_smooth, 0.0), rec).0
+        self.integrate_with((s_step, s_step_smooth, 0.0, false), rec)
+            .0
     }
 
     /// The strip from the inlet to the outlet with the plastic steps
     /// (s-step, longer s-step on non-stiff segments, exponential step or 0
-    /// for none).
+    /// for none, whether steps near vy = 0 may be set by the exact turn of
+    /// the slip direction, see `Strip::turn_step`).
     fn integrate_with(
         &self,
-        steps: (f64, f64, f64),
+        steps: (f64, f64, f64, bool),
         rec: &mut impl FnMut(Event),
     ) -> (StripSums, u32) {
         let c = self.c;

@@ -84,6 +84,16 @@ const MAX_SUB_ANISO: usize = 16;
 const TURN_PER_STEP: f64 = 3.0;
 /// Largest number of sub-steps per step for the turn of the slip direction.
 const MAX_SUB_TURN: f64 = 256.0;
+/// Largest κ·h of a step that is limited by the exact turn of the slip
+/// direction (`Strip::turn_step`) rather than by the bound |α'|max·h
+/// (which makes the steps creep towards vy = 0 in short pieces). Where
+/// κ·h is larger RK4 does not resolve a step holding the rate peak of α
+/// (docs/decisions/0074: without a limit 1.28·tol at tol 1e-2). Measured
+/// (docs/decisions/0075): with 1 the worst error/tol over 4842 cases of
+/// `cargo xtask ep-sets` at tol 1e-2/1e-3/1e-4 rises by ≤ 0.04 (wide range
+/// 0.147 → 0.184 at 1e-3), with 2 to 0.371 there; 0.5 is no more accurate
+/// (tests/convergence.rs 0.34 against 0.30) for the same instructions.
+const TURN_EXACT_KAPPA_H: f64 = 1.0;
 /// Largest number of steps of a plastic segment (a guard: the turn limit
 /// needs at most span/s_step·(1 + π/(3·s_step)) steps).
 const MAX_STEPS: usize = 1 << 16;
@@ -347,20 +357,15 @@ impl Strip {
         // The slip direction v = (a, vy/gy) turns at
         // α' = a·(q2/gy)·c·cos s/(a² + (vy/gy)²).
         let (vy0, vy1, q2) = (vy0 / self.gy, vy1 / self.gy, self.q2 / self.gy);
-        let (vmin, cmax) = if (vy0 < 0.0) != (vy1 < 0.0) {
-            (0.0, 1.0)
-        } else {
-            (vy0.abs().min(vy1.abs()), cs0.max(cs1))
-        };
+        // Selects rather than branches (the crossing of vy = 0 is not
+        // predictable along a strip near the pole).
+        let cross = (vy0 < 0.0) != (vy1 < 0.0);
+        let vmin = if cross { 0.0 } else { vy0.abs().min(vy1.abs()) };
+        let cmax = if cross { 1.0 } else { cs0.max(cs1) };
         let num = (self.a * q2 * self.c).abs() * cmax * h;
         let den = a2 + vmin * vmin;
-        let ah = if num == 0.0 {
-            0.0
-        } else if den > 0.0 {
-            num / den
-        } else {
-            f64::INFINITY
-        };
+        // num ≥ 0 and den ≥ 0: num/den is +∞ where den = 0 < num.
+        let ah = if num == 0.0 { 0.0 } else { num / den };
         (kh, ah)
     }
 
@@ -459,7 +464,7 @@ impl Strip {
         n: (f64, f64),
         acc: &mut StripSums,
         allow_unload: bool,
-        (s_step, s_step_smooth, etd_step): (f64, f64, f64),
+        (s_step, s_step_smooth, etd_step, exact_turn): (f64, f64, f64, bool),
         rec: &mut impl FnMut(Event),
     ) -> PlasticEnd {
         rec(Event::Plastic { x: self.c * sn, n });
@@ -524,14 +529,23 @@ impl Strip {
         } else {
             GRADED_KAPPA_H / ((2.0 / 3.0) * self.a.hypot(self.vy(self.c * sn))).max(RATE_FLOOR)
         };
+        // tan of the turn limit (`turn_step`; a_h ≤ 3·0.3 < π/2, the largest
+        // s-step).
+        let turn_t = if nonstiff || !exact_turn {
+            f64::NAN
+        } else {
+            a_h.tan()
+        };
+        // The graded cap of step i: h_first·2^(min(i − 1, 30)) (exact).
+        let mut h_grade = h_first;
         loop {
             // Non-stiff segments: nsteps equal steps. Otherwise steps of at
             // most h, shortened where the slip direction turns by more than
             // a_h (near the strip's crossing of the spin pole's line vy = 0),
             // so that unloading is checked at that resolution too.
-            let (h, c2, s2, last, step_rates) = if nonstiff {
+            let (h, c2, s2, last, step_rates, a_h_step) = if nonstiff {
                 i += 1;
-                (h, c2, s2, i == nsteps, None)
+                (h, c2, s2, i == nsteps, None, a_h)
             } else {
                 let rem = FRAC_PI_2 - s_cur;
                 i += 1;
@@ -549,14 +563,34 @@ impl Strip {
                 };
                 let (kh, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1.max(0.0), hv);
                 let h_full = hv;
+                // The turn limit of `advance`'s sub-division for this step
+                // (none for a step set by the exact turn).
+                let mut a_h_step = a_h;
                 if ah > a_h && i <= MAX_STEPS {
-                    hv *= (a_h / ah).max(1.0 / MAX_SUB_TURN);
+                    let hb = hv * (a_h / ah).max(1.0 / MAX_SUB_TURN);
+                    // The step to an exact turn of a_h is at least hb (the
+                    // bound over-estimates the turn); taken where RK4
+                    // resolves it (κ·h ≤ TURN_EXACT_KAPPA_H, κ·h ∝ h).
+                    let hx = if turn_t.is_nan() {
+                        hb
+                    } else {
+                        self.turn_step(&p, turn_t, s1, hv).clamp(hb, hv)
+                    };
+                    hv = if hx > hb && kh * (hx / hv) <= TURN_EXACT_KAPPA_H {
+                        a_h_step = f64::INFINITY;
+                        hx
+                    } else {
+                        hb
+                    };
                 }
                 // Graded first steps: the lag of n behind the slip direction
                 // at yield relaxes within ~1/κ, which RK4 at κ·h ≈ 2 resolves
                 // poorly; start at κ·h = GRADED_KAPPA_H and double.
                 if i < GRADED_STEPS {
-                    hv = hv.min(h_first * f64::from(1u32 << (i - 1).min(30)));
+                    hv = hv.min(h_grade);
+                    if i <= 30 {
+                        h_grade *= 2.0;
+                    }
                 }
                 // The bounds just computed hold for the step unless it was
                 // shortened (`advance` then computes them for the new step).
@@ -566,13 +600,13 @@ impl Strip {
                 } else {
                     sin_cos_small(0.5 * hv)
                 };
-                (hv, c2v, s2v, hv >= rem, step_rates)
+                (hv, c2v, s2v, hv >= rem, step_rates, a_h_step)
             };
             let mut q = if nonstiff {
                 self.rk4::<ISO>(&p, h, c2, s2)
             } else {
                 s_cur += h;
-                self.advance::<ISO>(&p, h, c2, s2, a_h, &mut cache, step_rates)
+                self.advance::<ISO>(&p, h, c2, s2, a_h_step, &mut cache, step_rates)
             };
             let step = (h, last, allow_unload, a_h);
             if let Some(end) = self.step_end::<ISO>(&p, &mut q, step, &mut cache, acc, rec) {
@@ -585,6 +619,35 @@ impl Strip {
         }
         *acc += p.acc;
         PlasticEnd::Outlet
+    }
+
+    /// The step from `p` over which the slip direction v = (a, vy/gy)
+    /// turns by exactly atan(`turn_t`), or `h_full` (whose end has sine
+    /// `s1`) if it turns by less. tan α = u = vy/(gy·a) is linear in X, so
+    /// the end's u1 follows from tan(α1 − α0) = ±turn_t in closed form, and
+    /// the step in s from X1 = c·sn1 by one asin.
+    #[inline(never)]
+    fn turn_step(&self, p: &PState, turn_t: f64, s1: f64, h_full: f64) -> f64 {
+        let ga = self.gy * self.a;
+        let du = self.q2 / ga;
+        let u0 = self.vy(self.c * p.sn) / ga;
+        // u1 = (u0 ± t)/(1 ∓ t·u0) in the direction u moves (X grows);
+        // a denominator ≤ 0: the turn to α = ±π/2 is less than atan(t).
+        let (num, den) = if du > 0.0 {
+            (u0 + turn_t, 1.0 - turn_t * u0)
+        } else {
+            (u0 - turn_t, 1.0 + turn_t * u0)
+        };
+        if den <= 0.0 || den.is_nan() {
+            return h_full;
+        }
+        let sn1 = p.sn + (num / den - u0) / (du * self.c);
+        if sn1 >= s1 || sn1.is_nan() {
+            return h_full;
+        }
+        // sin(s1 − s0) = sn1·cs0 − cs1·sn0.
+        let cs1 = (1.0 - sn1 * sn1).max(0.0).sqrt();
+        (sn1 * p.cs - cs1 * p.sn).asin()
     }
 
     /// End of one plastic step from `p` to `q` of length h, shared by the
@@ -610,7 +673,10 @@ impl Strip {
         if allow_unload && q.cs > OUTLET_CS {
             let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
             if g1 < 0.0 {
-                let best = self.locate_unload::<ISO>(p, q, h, g1, a_h, cache);
+                // Copies for the out-of-line call, so that p and q need not
+                // live in memory on the hot path.
+                let (p0, q0) = (*p, *q);
+                let best = self.locate_unload::<ISO>(&p0, &q0, h, g1, a_h, cache);
                 *acc += best.acc;
                 let l = 1.5 * self.c * best.cs;
                 rec(Event::Plastic {
