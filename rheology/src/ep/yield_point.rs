@@ -10,6 +10,11 @@ const BRACKET_EPS: f64 = 1e-13;
 const F_TOL: f64 = 1e-15;
 /// Bracket width in X counted as converged, relative to max(c, |X|).
 const X_TOL: f64 = 4e-16;
+/// Newton step (relative to max(c, |X|)) after which the updated root is
+/// returned without evaluating f there: quadratic convergence leaves an
+/// error ≈ |f''/2f'|·step² ≈ 1e-12 relative, far below what the strip sums
+/// need (they change by ≈ |Z|·δX; the smallest tolerance is 1e-9).
+const NEWTON_STEP_TOL: f64 = 1e-6;
 /// Largest number of safeguarded Newton steps (bisection guarantees
 /// convergence well within it).
 const NEWTON_ITERATIONS: usize = 100;
@@ -104,12 +109,13 @@ impl Strip {
             if hi - lo <= X_TOL * self.c.max(lo.abs()) {
                 return hi;
             }
-            let xn = x - f / fp;
-            x = if xn > lo && xn < hi && xn.is_finite() {
-                xn
-            } else {
-                0.5 * (lo + hi)
-            };
+            let dx = f / fp;
+            let xn = x - dx;
+            let inside = xn > lo && xn < hi && xn.is_finite();
+            if inside && dx.abs() <= NEWTON_STEP_TOL * self.c.max(lo.abs()) {
+                return xn;
+            }
+            x = if inside { xn } else { 0.5 * (lo + hi) };
         }
         hi
     }
