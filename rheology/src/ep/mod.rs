@@ -277,7 +277,9 @@ impl Strip {
                 break;
             }
             let z = self.z_el(x0, z0, xy);
-            let m = z.0.hypot(z.1);
+            // |Z| = L ≤ 1.5·c at the yield point: no overflow or underflow
+            // to guard against (hypot's scaling is not needed).
+            let m = (z.0 * z.0 + z.1 * z.1).sqrt();
             if m.is_nan() || m <= 0.0 || !m.is_finite() {
                 break;
             }

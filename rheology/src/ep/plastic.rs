@@ -468,7 +468,8 @@ impl Strip {
         rec: &mut impl FnMut(Event),
     ) -> PlasticEnd {
         rec(Event::Plastic { x: self.c * sn, n });
-        let s0 = sn.atan2(cs);
+        // s0 = atan2(sn, cs) with cs = √(1 − sn²) ≥ 0 (asin is cheaper).
+        let s0 = sn.asin();
         let span = FRAC_PI_2 - s0;
         if span <= 0.0 {
             return PlasticEnd::Outlet;
