@@ -269,7 +269,7 @@ impl Strip {
         let mut z0 = (0.0, 0.0);
         let mut switches = 0;
         loop {
-            let xy = self.find_yield(x0, z0);
+            let xy = self.find_yield(x0, z0, steps.0);
             acc += self.el_sums(x0, z0, xy);
             rec(Event::Elastic { x0, z0, x1: xy });
             if xy >= c * (1.0 - 1e-15) {

@@ -10,11 +10,9 @@ const BRACKET_EPS: f64 = 1e-13;
 const F_TOL: f64 = 1e-15;
 /// Bracket width in X counted as converged, relative to max(c, |X|).
 const X_TOL: f64 = 4e-16;
-/// Newton step (relative to max(c, |X|)) after which the updated root is
-/// returned without evaluating f there: quadratic convergence leaves an
-/// error ≈ |f''/2f'|·step² ≈ 1e-12 relative, far below what the strip sums
-/// need (they change by ≈ |Z|·δX; the smallest tolerance is 1e-9).
-const NEWTON_STEP_TOL: f64 = 1e-6;
+/// Root error (relative to max(c, |X|)) accepted per s-step⁴, see
+/// [`Strip::find_yield`].
+const ROOT_TOL_PER_STEP4: f64 = 1e-3;
 /// Largest number of safeguarded Newton steps (bisection guarantees
 /// convergence well within it).
 const NEWTON_ITERATIONS: usize = 100;
@@ -29,7 +27,14 @@ impl Strip {
     /// the roots of the quadratic g', so f is evaluated at those points and at
     /// the outlet (where f = |Z|² ≥ 0), and the first bracket with f ≥ 0 at
     /// its end holds exactly one crossing, refined by safeguarded Newton.
-    pub(super) fn find_yield(&self, x0: f64, z0: (f64, f64)) -> f64 {
+    ///
+    /// Newton stops once the error left by its last step, ≈ |f''/2f'|·step²
+    /// (quadratic convergence; f'' = 2(a² + vy² + Zy·q2) + 4.5 is large at
+    /// high spin, up to ≈ 1e5 relative to f'), is below 1e-3·s_step⁴ of
+    /// max(c, |X|): the plastic steps' RK4 error is ≈ 10·s_step⁴ (the
+    /// tolerance, `Accuracy::s_step`), so the root is resolved 1e4 times
+    /// finer than the strip sums need (they change by ≈ |Z|·δX).
+    pub(super) fn find_yield(&self, x0: f64, z0: (f64, f64), s_step: f64) -> f64 {
         let c = self.c;
         let span = c - x0;
         if span <= 0.0 {
@@ -82,7 +87,9 @@ impl Strip {
                 } else {
                     xj
                 };
-                return self.refine(x0, z0, lo, xj, start);
+                let s2 = s_step * s_step;
+                let root_tol = ROOT_TOL_PER_STEP4 * s2 * s2;
+                return self.refine(x0, z0, lo, xj, start, root_tol);
             }
             (lo, glo) = (xj, gj);
         }
@@ -91,7 +98,15 @@ impl Strip {
 
     /// Safeguarded Newton for the first crossing f ≥ 0 in (lo, hi], from
     /// `start` (or hi if it is outside the bracket).
-    fn refine(&self, x0: f64, z0: (f64, f64), mut lo: f64, mut hi: f64, start: f64) -> f64 {
+    fn refine(
+        &self,
+        x0: f64,
+        z0: (f64, f64),
+        mut lo: f64,
+        mut hi: f64,
+        start: f64,
+        root_tol: f64,
+    ) -> f64 {
         let ftol = F_TOL * (1.0 + 2.25 * self.c * self.c);
         let mut x = if start > lo && start < hi { start } else { hi };
         for _ in 0..NEWTON_ITERATIONS {
@@ -112,8 +127,15 @@ impl Strip {
             let dx = f / fp;
             let xn = x - dx;
             let inside = xn > lo && xn < hi && xn.is_finite();
-            if inside && dx.abs() <= NEWTON_STEP_TOL * self.c.max(lo.abs()) {
-                return xn;
+            if inside {
+                let vy = self.vy(x);
+                let e = x - x0;
+                let zy = z0.1 + (self.b1 + self.q2 * x0) * e + 0.5 * self.q2 * e * e;
+                let fpp = 2.0 * (self.a * self.a + vy * vy + zy * self.q2) + 4.5;
+                let scale = self.c.max(lo.abs());
+                if (fpp * dx * dx).abs() <= 2.0 * root_tol * scale * fp.abs() {
+                    return xn;
+                }
             }
             x = if inside { xn } else { 0.5 * (lo + hi) };
         }
