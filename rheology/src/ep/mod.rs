@@ -8,7 +8,8 @@
 //! * elastic segments: Z is a polynomial in X (closed form, integrated
 //!   exactly); first yield or reloading is the first root of
 //!   the quartic |Z(X)|² − L(X)², bracketed exactly between the turning
-//!   points of its cubic factor, then safeguarded Newton;
+//!   points of its cubic factor, then safeguarded Newton (stopped once its
+//!   quadratic error estimate is 1e-3·s_step⁴ of c);
 //! * plastic segments: Z = L·n with the unit vector n rotating at
 //!   dn/ds = (2/3)(v·t)·t, t ⟂ n (Prandtl–Reuss consistency; the 1/√(c−X)
 //!   singularity of dθ/dX is absorbed by dX/ds = c·cos s; with an
