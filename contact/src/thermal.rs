@@ -108,7 +108,9 @@
 //! * Hamrock–Dowson was fitted for 1 ≤ k ≤ 8 (Hamrock & Dowson 1977); outside
 //!   it the formula is extrapolated.
 //! * The inlet heating factor takes the longitudinal slide-to-roll ratio
-//!   |ΔU|/U ≤ 2 (side slip and spin are not part of its fit) and p_h/E' ≤ 0.1;
+//!   |ΔU|/U ≤ 2 (side slip and spin are not part of its fit; the contact
+//!   takes it at 2 beyond, where a surface moves out of the contact, and
+//!   the factor tends to 1 as U → 0 whatever the ratio) and p_h/E' ≤ 0.1;
 //!   it is an error where its numerator is not positive (L beyond
 //!   (13.2 p_h/E')^(−1/0.42), ≈ 124 at p_h/E' = 0.01; the report's tests
 //!   reach L = 39 at 80 m/s, 50 °C).
@@ -167,7 +169,10 @@ pub enum Film {
     /// with the thermal reduction factor of Gupta et al. (1992,
     /// [`inlet_heating_factor`]) at the thermal loading
     /// `L = β_η η₀ U²/k_f` ([`thermal_loading`]; k_f from
-    /// [`Thermal::fluid_conductivity`]) and the slide-to-roll ratio |ΔU|/U.
+    /// [`Thermal::fluid_conductivity`]) and the slide-to-roll ratio |ΔU|/U
+    /// (at most [`SLIDE_ROLL_RANGE`]'s 2: beyond it, e.g. when starting from
+    /// rest with slip, the factor is taken at 2; as U → 0 it tends to 1
+    /// whatever the ratio).
     HamrockDowsonInletHeated {
         /// Inlet dynamic viscosity η₀, Pa·s.
         viscosity: f64,
@@ -735,7 +740,11 @@ fn inlet_heated(
     let speed = state.rolling_speed.abs();
     let p0 = g.at_load(state.load)?.p0;
     let l = thermal_loading(viscosity_temperature, viscosity, speed, conductivity);
-    Ok(h * inlet_heating_factor(l, p0 / g.e_prime, state.slip.abs() / speed)?)
+    // Beyond the factor's range of slide-to-roll ratios (states starting
+    // from rest with slip: S → ∞ as U → 0, where L → 0 and φ_T → 1
+    // whatever S) the factor is taken at its largest S.
+    let s = (state.slip.abs() / speed).min(SLIDE_ROLL_RANGE.max());
+    Ok(h * inlet_heating_factor(l, p0 / g.e_prime, s)?)
 }
 
 /// The thermal model of one loaded state: temperature coefficients and the

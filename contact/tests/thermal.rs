@@ -410,8 +410,8 @@ fn inlet_heated_film_of_a_report_fluid() {
 }
 
 /// Bad input of the inlet-heated films names the quantity: a user fluid has
-/// no η₀(θ) of its own, β_η outside [0, 1] 1/K, and a state beyond the
-/// factor's slide-to-roll range (|ΔU|/U ≤ 2).
+/// no η₀(θ) of its own, β_η outside [0, 1] 1/K, and the factor beyond its
+/// slide-to-roll range (|ΔU|/U ≤ 2), which the contact clamps to it.
 #[test]
 fn inlet_heated_film_bad_input() {
     let (b1, b2) = bodies();
@@ -446,7 +446,24 @@ fn inlet_heated_film_bad_input() {
     };
     let c = build(f(), good).unwrap();
     assert!(c.evaluate(&state(20.0, 0.2, 0.0, 0.0)).is_ok());
-    let e = c.evaluate(&state(20.0, 50.0, 0.0, 0.0)).unwrap_err();
+    // Beyond the factor's slide-to-roll range the contact takes it at 2
+    // (no error for a state starting from rest with slip): the film at
+    // |ΔU|/U = 2.5 is the one at 2, and a state at U = 1 mm/s with 0.5 m/s
+    // of slip (ratio 500) evaluates.
+    let th = Thermal {
+        film: good,
+        ..user_thermal(0.01)
+    };
+    let h = |s: &OperatingState| thermal::film_thickness(&th, c.geometry(), Some(&f()), s).unwrap();
+    let (h2, h25) = (
+        h(&state(20.0, 40.0, 0.0, 0.0)),
+        h(&state(20.0, 50.0, 0.0, 0.0)),
+    );
+    assert!(h2 > 0.0 && h2 == h25, "{h2} {h25}");
+    assert!(h(&state(20.0, 30.0, 0.0, 0.0)) > h2);
+    assert!(c.evaluate(&state(20.0, 50.0, 0.0, 0.0)).is_ok());
+    assert!(c.evaluate(&state(1e-3, 0.5, 0.0, 0.0)).is_ok());
+    let e = thermal::inlet_heating_factor(1.0, 0.006, 2.5).unwrap_err();
     assert!(
         traction_contact::error_chain(&e).contains("slide-to-roll"),
         "{e}"
