@@ -833,8 +833,8 @@ fn end_point(p1: Pt, last: bool) -> Pt {
     }
 }
 
-/// Strip integrals [∫Zx dX, ∫Zy dX, ∫Zy·X dX], step errors aimed at atol
-/// and accepted up to [`STEP_ACCEPT`]·atol.
+/// Strip integrals [∫Zx dX, ∫Zy dX, ∫Zy·X dX], step error estimates
+/// ≤ [`STEP_ACCEPT`]·atol (step sizes aimed at 0.66·atol).
 #[allow(clippy::needless_range_loop)]
 pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
     let mut q = [0.0; 3];
