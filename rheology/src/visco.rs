@@ -63,7 +63,7 @@
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use crate::ep::{MAX_BREAKS, Scaled, Strip, adaptive_in_phi, graded_breaks};
+use crate::ep::{MAX_BREAKS, Scaled, Strip, adaptive_in_phi, graded_breaks, refine_share, to_j};
 
 /// Largest viscous rate ψ, μ used (the relaxation is then instantaneous at
 /// any step; keeps the 2 × 2 determinants finite).
@@ -1098,18 +1098,6 @@ fn panel_edges(p: &Scaled) -> ([f64; 4 * MAX_BREAKS], usize) {
     (breaks, nb)
 }
 
-/// (J4, J5, J6) from the contact sums [∫Zx, ∫Zy, ∫Zy·X, ∫Zx·Y] (over the
-/// strips, dY = cos φ dφ) of a contact of aspect ratio k with spin-pole
-/// offset ΔX: the elastic/plastic model's normalisation (J6 is the torque
-/// about the spin pole).
-fn sums_to_j(k: f64, dx: f64, s: &[f64; 4]) -> (f64, f64, f64) {
-    (
-        s[0] / PI,
-        s[1] / PI,
-        (s[2] + dx * s[1] - k * s[3]) / (PI * k.sqrt()),
-    )
-}
-
 /// Interior nodes of the 4-point Gauss–Lobatto rule (±1/√5) and of its
 /// 7-point Kronrod extension (0, ±√(2/3)) on [−1, 1]; both rules also use
 /// the ends ±1 (W. Gander, W. Gautschi, BIT 40 (2000) 84–101).
@@ -1131,13 +1119,6 @@ const ACCEPT: f64 = 0.5;
 /// A panel to be integrated: (lo, hi, integrand at lo, at hi, depth, weight
 /// of its value in the result).
 type Panel = (f64, f64, [f64; 4], [f64; 4], u32, f64);
-
-/// 0 for t ≤ 0, 1 for t ≥ 1, C¹ cubic in between.
-#[inline]
-fn smooth_step(t: f64) -> f64 {
-    let t = t.clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
-}
 
 /// Adaptive Lobatto–Kronrod panels in φ (Y = sin φ) from the sorted edges
 /// `breaks` (from −π/2 to π/2); `strip(Y)` gives a strip's
@@ -1189,14 +1170,10 @@ fn lobatto_kronrod_in_phi(
                 * (KRO_W.0 * ends + KRO_W.1 * (fa.0[i] + fa.1[i]) + KRO_W.2 * bs + KRO_W.3 * fm[i]);
             d[i] = kv[i] - lob;
         }
-        let (e4, e5, e6) = sums_to_j(k, dx, &d);
+        let (e4, e5, e6) = to_j(k, dx, &d);
         let err = e4.abs().max(e5.abs()).max(e6.abs());
         let allowed = ACCEPT * tol * (hi - lo) / PI;
-        let refine = if depth >= MAX_DEPTH || err.is_nan() {
-            0.0
-        } else {
-            smooth_step(err / allowed - 1.0)
-        };
+        let refine = refine_share(err, allowed, depth, MAX_DEPTH);
         if refine < 1.0 {
             let w = weight * (1.0 - refine);
             for i in 0..4 {
@@ -1208,7 +1185,7 @@ fn lobatto_kronrod_in_phi(
             stack.push((m, hi, fm, fh, depth + 1, weight * refine));
         }
     }
-    sums_to_j(k, dx, &total)
+    to_j(k, dx, &total)
 }
 
 pub(crate) mod reference;

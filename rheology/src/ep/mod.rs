@@ -44,12 +44,12 @@ mod yield_point;
 
 use plastic::ETD_MIN_STEP;
 
+#[cfg(test)]
+pub(crate) use quadrature::panel_sums;
 pub(crate) use quadrature::{
     MAX_BREAKS, adaptive_in_phi, contact_integral, contact_integral_adaptive_at, graded_breaks,
-    solve, solve_adaptive,
+    refine_share, solve, solve_adaptive, to_j,
 };
-#[cfg(test)]
-pub(crate) use quadrature::{panel_sums, to_j};
 
 /// Smallest cos s at which the anisotropic flow term (3/2)·tan s (= −dL/dX)
 /// is evaluated. Near the outlet the shrinking limit drives the stress

@@ -131,11 +131,7 @@ pub(crate) fn adaptive_in_phi(
         // BLEND.1·allowed on, a smooth step in between, so that the result is a
         // continuous function of the inputs (no jump where a panel's
         // decision flips).
-        let refine = if depth >= max_depth || err.is_nan() {
-            0.0
-        } else {
-            smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
-        };
+        let refine = refine_share(err, allowed, depth, max_depth);
         if refine < 1.0 {
             let w = weight * (1.0 - refine);
             for i in 0..4 {
@@ -153,6 +149,20 @@ pub(crate) fn adaptive_in_phi(
 /// Blend between a panel's value and its refinement: from BLEND.0 to BLEND.1
 /// times the allowed change (see `contact_integral_adaptive_at`).
 const BLEND: (f64, f64) = (1.0, 2.0);
+
+/// Share of a panel's refined value in the result (the rest is its own
+/// value): 0 up to BLEND.0 times the allowed change `allowed`, 1 from
+/// BLEND.1 times it, a C¹ smooth step in between (so that a panel's
+/// decision adds no jump in the inputs); 0 at `max_depth` or for a NaN
+/// change. Shared by the elastic/plastic and viscoelastic panel rules.
+#[inline]
+pub(crate) fn refine_share(err: f64, allowed: f64, depth: u32, max_depth: u32) -> f64 {
+    if depth >= max_depth || err.is_nan() {
+        0.0
+    } else {
+        smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
+    }
+}
 
 /// 0 for t ≤ 0, 1 for t ≥ 1, C¹ cubic in between.
 #[inline]
@@ -427,11 +437,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
         let err = e4.abs().max(e5.abs()).max(e6.abs());
         let share = if kink { ACCEPT_KINK } else { 1.0 };
         let allowed = share * tol * (hi - lo) / PI;
-        let refine = if depth >= max_depth || err.is_nan() {
-            0.0
-        } else {
-            smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
-        };
+        let refine = refine_share(err, allowed, depth, max_depth);
         if refine < 1.0 {
             let w = weight * (1.0 - refine);
             for i in 0..4 {
