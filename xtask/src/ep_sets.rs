@@ -12,6 +12,14 @@
 //! |J3| ∈ [0.5, 26]), from a fixed seed; `refs FILE SEED` and
 //! `errs FILE SEED` draw the 300 random cases from another seed (more
 //! cases of the same distributions for a change of the adaptive rules).
+//!
+//! `ep-sets lines [SEED [TOL]]` prints the largest second difference of
+//! J4, J5, J6 (in units of tol, default 1e-3) along random lines of 150
+//! points 1e-4 apart in J (random unit directions), 60 through high-spin
+//! points (k ∈ {0.5, 1, 2, 5}, |J1|, |J2| ≤ 5, J3 ∈ [2, 26]) and 60
+//! through wide-range ones (k 0.05–20 log-uniform, |J1| ≤ 20, |J2| ≤ 3,
+//! |J3| ≤ 100): tolerance-driven jumps show up at their full size, a kink
+//! of the model at ≲ 1e-5.
 #![allow(clippy::unwrap_used)]
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate};
@@ -78,6 +86,15 @@ pub fn run(a: &[String]) -> Result<(), String> {
     match a.first().map(String::as_str) {
         Some("refs") => refs(a.get(1).ok_or("refs needs FILE")?, seed(a)?),
         Some("errs") => errs(a.get(1).ok_or("errs needs FILE")?, seed(a)?),
+        Some("lines") => {
+            let seed = a.get(1).map_or(Ok(SEED), |t| {
+                t.parse().map_err(|_| format!("bad SEED `{t}`"))
+            })?;
+            let tol = a.get(2).map_or(Ok(1e-3), |t| {
+                t.parse().map_err(|_| format!("bad TOL `{t}`"))
+            })?;
+            lines(seed, tol)
+        }
         Some("bits") => {
             let tols = match a.get(1) {
                 Some(t) => vec![t.parse().map_err(|_| format!("bad TOL `{t}`"))?],
@@ -85,7 +102,10 @@ pub fn run(a: &[String]) -> Result<(), String> {
             };
             bits(&tols)
         }
-        _ => Err("ep-sets needs `refs FILE`, `errs FILE` or `bits [TOL]`".to_string()),
+        _ => Err(
+            "ep-sets needs `refs FILE`, `errs FILE`, `lines [SEED [TOL]]` or `bits [TOL]`"
+                .to_string(),
+        ),
     }
 }
 
@@ -148,6 +168,64 @@ fn bits(tols: &[f64]) -> Result<(), String> {
             let (a, b, c) = (o.j4.to_bits(), o.j5.to_bits(), o.j6.to_bits());
             println!("{tol:e} {i} {a:016x} {b:016x} {c:016x}");
         }
+    }
+    Ok(())
+}
+
+/// Largest |second difference| of J4, J5, J6 over `n` points from `p` in
+/// steps `h·d`.
+fn max_second_difference(
+    k: f64,
+    p: [f64; 3],
+    d: [f64; 3],
+    (h, n): (f64, usize),
+    acc: Accuracy,
+) -> Result<f64, String> {
+    let mut v = Vec::with_capacity(n);
+    for i in 0..n {
+        let s = i as f64 * h;
+        let inp = Inputs::new(k, p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2])
+            .map_err(|e| e.to_string())?;
+        let o = evaluate(&inp, Model::ElasticPlastic, acc).map_err(|e| e.to_string())?;
+        v.push([o.j4, o.j5, o.j6]);
+    }
+    Ok(v.windows(3).fold(0.0f64, |m, w| {
+        (0..3).fold(m, |m, j| m.max((w[2][j] - 2.0 * w[1][j] + w[0][j]).abs()))
+    }))
+}
+
+fn lines(seed: u64, tol: f64) -> Result<(), String> {
+    let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
+    let mut r = Lcg::new(seed);
+    let sign = |r: &mut Lcg| if r.unit() < 0.5 { -1.0 } else { 1.0 };
+    for set in ["high spin", "wide range"] {
+        let (mut worst, mut at) = (0.0, String::new());
+        for _ in 0..60 {
+            let (k, p) = if set == "high spin" {
+                let k = [0.5, 1.0, 2.0, 5.0][(r.unit() * 4.0) as usize % 4];
+                let j1 = (2.0 * r.unit() - 1.0) * 5.0;
+                let j2 = (2.0 * r.unit() - 1.0) * 5.0;
+                (k, [j1, j2, 2.0 + 24.0 * r.unit()])
+            } else {
+                let k = 0.05 * 400f64.powf(r.unit());
+                let j1 = (2.0 * r.unit() - 1.0) * 20.0;
+                let j2 = (2.0 * r.unit() - 1.0) * 3.0;
+                (k, [j1, j2, sign(&mut r) * 100.0 * r.unit()])
+            };
+            let d = [
+                2.0 * r.unit() - 1.0,
+                2.0 * r.unit() - 1.0,
+                2.0 * r.unit() - 1.0,
+            ];
+            let nd = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-300);
+            let d = [d[0] / nd, d[1] / nd, d[2] / nd];
+            let m = max_second_difference(k, p, d, (1e-4, 150), acc)? / tol;
+            if m > worst {
+                worst = m;
+                at = format!("k = {k:.4}, J = ({:.4}, {:.4}, {:.4})", p[0], p[1], p[2]);
+            }
+        }
+        println!("{set}: max |Δ²| = {worst:.4}·tol ({at})");
     }
     Ok(())
 }

@@ -2,8 +2,9 @@
 //!
 //! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
 //! - `prof-visco CASE TOL REPS [old|gauss]`: the same for the viscoelastic benches;
-//! - `ep-sets refs|errs FILE [SEED]`, `ep-sets bits [TOL]`: the elastic/plastic
-//!   solver against 128-panel references on 307 cases, and its results' bits;
+//! - `ep-sets refs|errs FILE [SEED]`, `ep-sets bits [TOL]`, `ep-sets lines
+//!   [SEED [TOL]]`: the elastic/plastic solver against 128-panel references on
+//!   307 cases, its results' bits, and its smoothness along random lines;
 //! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
 //!   random points.
 //!
@@ -23,11 +24,12 @@ commands:
                                   the same for the viscoelastic model: CASE m h x l e g
                                   (prof_visco.rs); `old` = the former fixed-grid scheme,
                                   `gauss` = the former Gauss-Legendre panel rule
-  ep-sets refs FILE [SEED] | errs FILE [SEED] | bits [TOL]
+  ep-sets refs FILE [SEED] | errs FILE [SEED] | bits [TOL] | lines [SEED [TOL]]
                                   elastic/plastic solver on 307 cases (ep_sets.rs): write
                                   128-panel references, worst error/tol per set against
-                                  them (SEED: other random cases), or the results' bit
-                                  patterns
+                                  them (SEED: other random cases), the results' bit
+                                  patterns, or the largest second differences along 120
+                                  random lines
   map-check K TOL N RLOG [DX GY]  rheology map against evaluate at TOL/100 on N random
                                   points, |J| log-uniform in [0.1, 10^(RLOG-1)]";
 

@@ -319,32 +319,37 @@ pub(crate) fn solve_adaptive(
 /// Deepest refinement of an initial panel in [`solve_adaptive`].
 const MAX_DEPTH: u32 = 10;
 
-/// Interior nodes of the 5-point Gauss–Lobatto rule (0, ±√(3/7), degree 7)
-/// and of its 9-point Kronrod extension (adding ±0.3410, ±0.8904; degree
-/// 13) on [−1, 1], as (node, Kronrod weight, Lobatto weight); both rules
-/// also use the ends ±1 with the weights [`LK_ENDS`]. The Kronrod nodes
-/// are the real roots that make the 9-point rule exact to degree 13
-/// (computed to 50 digits by Newton on the moment equations; the weights
-/// are positive).
-const LK_NODES: [(f64, f64, f64); 7] = [
-    (-0.890_405_527_512_668_8, 0.179_262_699_553_207_36, 0.0),
-    (
-        -0.654_653_670_707_977_2,
-        0.283_978_778_048_121_1,
-        49.0 / 90.0,
-    ),
-    (-0.340_982_265_910_992_97, 0.334_233_739_816_417_7, 0.0),
-    (0.0, 0.343_762_087_210_363_07, 32.0 / 45.0),
-    (0.340_982_265_910_992_97, 0.334_233_739_816_417_7, 0.0),
-    (
-        0.654_653_670_707_977_2,
-        0.283_978_778_048_121_1,
-        49.0 / 90.0,
-    ),
-    (0.890_405_527_512_668_8, 0.179_262_699_553_207_36, 0.0),
+/// The 5-point Gauss–Lobatto rule (degree 7) on [−1, 1]: nodes ±1, 0,
+/// ±√(3/7) ([`LOBATTO_X`]) with weights 1/10 ([`LK_ENDS`].1), 32/45 and
+/// 49/90 ([`LOBATTO_W`]). Its nodes hold those of the 3-point rule
+/// (Simpson: ±1, 0 with weights 1/3, 4/3, degree 3), and its 9-point
+/// Kronrod extension (degree 13) adds the nodes ±0.3410 and ±0.8904
+/// ([`LK_ADDED`]). The Kronrod nodes are the real roots that make the
+/// 9-point rule exact to degree 13 (computed to 50 digits by Newton on the
+/// moment equations; the weights are positive).
+const LOBATTO_X: f64 = 0.654_653_670_707_977_2;
+/// 5-point Lobatto weights of the nodes 0 and ±√(3/7).
+const LOBATTO_W: (f64, f64) = (32.0 / 45.0, 49.0 / 90.0);
+/// 9-point Kronrod weights of the Lobatto nodes 0 and ±√(3/7).
+const LK_MID: f64 = 0.343_762_087_210_363_07;
+const LK_LOBATTO: f64 = 0.283_978_778_048_121_1;
+/// The nodes the 9-point Kronrod rule adds to the 5-point Lobatto rule, with
+/// their Kronrod weights.
+const LK_ADDED: [(f64, f64); 4] = [
+    (-0.890_405_527_512_668_8, 0.179_262_699_553_207_36),
+    (-0.340_982_265_910_992_97, 0.334_233_739_816_417_7),
+    (0.340_982_265_910_992_97, 0.334_233_739_816_417_7),
+    (0.890_405_527_512_668_8, 0.179_262_699_553_207_36),
 ];
 /// Weights of the ends ±1: (Kronrod, Lobatto).
 const LK_ENDS: (f64, f64) = (0.030_643_738_977_072_31, 0.1);
+
+/// max(|ΔJ4|, |ΔJ5|, |ΔJ6|) of a difference `d` of contact sums.
+#[inline]
+fn max_abs_j(k: f64, dx: f64, d: &[f64; 4]) -> f64 {
+    let (e4, e5, e6) = to_j(k, dx, d);
+    e4.abs().max(e5.abs()).max(e6.abs())
+}
 
 /// Share of the allowed change ([`lobatto_kronrod_in_phi`]) for a panel
 /// whose strips do not all have the same flow topology (a kink of the strip
@@ -362,20 +367,32 @@ type Panel = (f64, f64, ([f64; 4], u32), ([f64; 4], u32), u32, f64);
 /// Adaptive Lobatto–Kronrod panels in φ (Y = sin φ) from the sorted edges
 /// `breaks` (from −π/2 to π/2); `strip(Y)` gives a strip's
 /// (∫Zx, ∫Zy, ∫Zy·X) and its flow topology (any number that changes where
-/// the strip sums have a kink in Y). A panel's 9-point Kronrod value is kept
-/// when it and the 5-point Lobatto value differ by less than the allowed
-/// change tol·width/π in J4, J5 and J6 (ACCEPT_KINK times that where the
-/// panel's strips differ in topology); otherwise both halves are refined,
-/// blended in between (the halves' share a C¹ step from 1 to 2 times the
-/// allowed change), so that a decision adds no jump in the inputs. A change
-/// of the topology gate moves the result continuously too: it flips where a
-/// kink crosses a panel's end (its effect on the panel's value vanishing
-/// there) or appears with no amplitude. Both rules use the panel's ends:
-/// neighbouring panels share their end strips and a panel's halves its
-/// ends and midpoint, so a panel costs 7 new strips (the strips at Y = ±1
-/// are empty), 12 with the former rule (4-point Gauss–Legendre checked
-/// against its halves, [`adaptive_in_phi`]), whose 8-point value was far
-/// more accurate than needed (docs/decisions/0074).
+/// the strip sums have a kink in Y). Each panel is decided in two stages,
+/// each against the allowed change tol·width/π in J4, J5 and J6
+/// (ACCEPT_KINK times that where the panel's strips differ in topology):
+///
+/// 1. its 5-point Lobatto value is kept when it and the 3-point one
+///    (Simpson, on the ends and the midpoint) differ by less than the
+///    allowed change (3 new strips);
+/// 2. otherwise (blended in between, see below) its 9-point Kronrod value
+///    is kept when it and the 5-point Lobatto value differ by less than
+///    the allowed change (4 more strips); otherwise both halves are
+///    refined.
+///
+/// Both decisions are blended (the share of the next stage a C¹ step from
+/// 1 to 2 times the allowed change), so that a decision adds no jump in the
+/// inputs. A change of the topology gate moves the result continuously too:
+/// it flips where a kink crosses a panel's end (its effect on the panel's
+/// value vanishing there) or appears with no amplitude. All three rules use
+/// the panel's ends: neighbouring panels share their end strips and a
+/// panel's halves its ends and midpoint, so a panel costs 3 or 7 new strips
+/// (the strips at Y = ±1 are empty), 12 with the former rule (4-point
+/// Gauss–Legendre checked against its halves, [`adaptive_in_phi`]), whose
+/// 8-point value was far more accurate than needed (docs/decisions/0074).
+/// Stage 1 settles mostly the halves of refined panels (the initial panels,
+/// 3–50 times the allowed change apart in Simpson's value on the bench
+/// set, go on to stage 2): a refinement then costs 2 × 3 strips instead of
+/// 2 × 7 (docs/decisions/0079).
 pub(crate) fn lobatto_kronrod_in_phi(
     breaks: &[f64],
     tol: f64,
@@ -407,37 +424,58 @@ pub(crate) fn lobatto_kronrod_in_phi(
     }
     while let Some((lo, hi, fl, fh, depth, weight)) = stack.pop() {
         let (m, hw) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-        let (mut kv, mut lv) = ([0.0; 4], [0.0; 4]);
-        for i in 0..4 {
-            kv[i] = LK_ENDS.0 * (fl.0[i] + fh.0[i]);
-            lv[i] = LK_ENDS.1 * (fl.0[i] + fh.0[i]);
-        }
         // The strips at Y = ±1 (zero width) count as any topology.
         let ends = [(fl.1, lo), (fh.1, hi)];
         let mut topo = ends.iter().find(|e| e.1.abs() < FRAC_PI_2).map(|e| e.0);
         let mut kink = fl.1 != fh.1 && lo.abs() < FRAC_PI_2 && hi.abs() < FRAC_PI_2;
-        let mut fm = fl;
-        for &(t, wk, wl) in &LK_NODES {
-            let v = f(m + hw * t);
+        // Stage 1: the 5-point Lobatto value against the 3-point one
+        // (Simpson, on the ends and the midpoint).
+        let fm = f(m);
+        let fa = f(m - hw * LOBATTO_X);
+        let fb = f(m + hw * LOBATTO_X);
+        for v in [&fm, &fa, &fb] {
             kink |= *topo.get_or_insert(v.1) != v.1;
-            if t == 0.0 {
-                fm = v;
-            }
-            for i in 0..4 {
-                kv[i] += wk * v.0[i];
-                lv[i] += wl * v.0[i];
-            }
         }
-        let mut d = [0.0; 4];
+        let (mut l5, mut d) = ([0.0; 4], [0.0; 4]);
         for i in 0..4 {
-            kv[i] *= hw;
-            d[i] = kv[i] - hw * lv[i];
+            let e = fl.0[i] + fh.0[i];
+            l5[i] =
+                hw * (LK_ENDS.1 * e + LOBATTO_W.1 * (fa.0[i] + fb.0[i]) + LOBATTO_W.0 * fm.0[i]);
+            d[i] = l5[i] - hw * ((1.0 / 3.0) * e + (4.0 / 3.0) * fm.0[i]);
         }
-        let (e4, e5, e6) = to_j(k, dx, &d);
-        let err = e4.abs().max(e5.abs()).max(e6.abs());
         let share = if kink { ACCEPT_KINK } else { 1.0 };
         let allowed = share * tol * (hi - lo) / PI;
-        let refine = refine_share(err, allowed, depth, max_depth);
+        // The share of the panel that goes on to stage 2 (blended like a
+        // refinement, whatever the depth).
+        let go_on = refine_share(max_abs_j(k, dx, &d), allowed, 0, 1);
+        if go_on < 1.0 {
+            let w = weight * (1.0 - go_on);
+            for i in 0..4 {
+                total[i] += w * l5[i];
+            }
+        }
+        if go_on == 0.0 {
+            continue;
+        }
+        let weight = weight * go_on;
+        // Stage 2: the 9-point Kronrod value against the 5-point Lobatto one.
+        let mut kv: [f64; 4] = std::array::from_fn(|i| {
+            LK_ENDS.0 * (fl.0[i] + fh.0[i]) + LK_MID * fm.0[i] + LK_LOBATTO * (fa.0[i] + fb.0[i])
+        });
+        for (t, wk) in LK_ADDED {
+            let v = f(m + hw * t);
+            kink |= *topo.get_or_insert(v.1) != v.1;
+            for (s, x) in kv.iter_mut().zip(v.0) {
+                *s += wk * x;
+            }
+        }
+        for i in 0..4 {
+            kv[i] *= hw;
+            d[i] = kv[i] - l5[i];
+        }
+        let share = if kink { ACCEPT_KINK } else { 1.0 };
+        let allowed = share * tol * (hi - lo) / PI;
+        let refine = refine_share(max_abs_j(k, dx, &d), allowed, depth, max_depth);
         if refine < 1.0 {
             let w = weight * (1.0 - refine);
             for i in 0..4 {
