@@ -385,8 +385,10 @@ impl Accuracy {
 /// when J3 = 0 and gy = 1 (exact; ΔX only moves the torque's reference
 /// point, adding ΔX·J5/√k), and the rigid/plastic solution when
 /// max|J| > [`J_RIGID`]. Otherwise it integrates strips with adaptive panels
-/// in Y (a 5-point Gauss–Lobatto rule and its 9-point Kronrod extension
-/// each, starting from panels graded towards the spin pole's strip,
+/// in Y (a 5-point Gauss–Lobatto rule checked against Simpson's rule on
+/// its nodes, and where that does not settle the panel against its 9-point
+/// Kronrod extension, starting from panels graded towards the spin pole's
+/// strip,
 /// refinement blended so that the outputs are continuous in the inputs; for
 /// J1 = 0 only Y ≥ 0, the strips being mirror images about Y = 0) and the
 /// s-step [`Accuracy::s_step`], doubled on
