@@ -132,6 +132,15 @@ const UNLOAD_ITERATIONS: usize = 6;
 const HERMITE_ITERATIONS: usize = 8;
 /// |g| below which the start of unloading counts as located.
 const UNLOAD_G_TOL: f64 = 1e-13;
+/// Error in s of the start of unloading accepted per s-step⁴: the Newton
+/// iteration of [`Strip::locate_unload`] stops once its next correction
+/// |g/g'| is at most this times s_step⁴, as the yield search does
+/// (`ROOT_TOL_PER_STEP4` in yield_point.rs): the RK4 steps' error is
+/// ≈ 10·s_step⁴ (the tolerance), and the strip sums change by ≈ |Z| times
+/// the location error. At tol 1e-3 cases p, b, c take 3.8, 1.5, 1.4 %
+/// fewer instructions, the worst error/tol of `cargo xtask ep-sets` is
+/// unchanged (docs/decisions/0079).
+const UNLOAD_ROOT_PER_STEP4: f64 = 1e-3;
 
 impl Strip {
     /// One RK4 step of length h; (c2, s2) = (cos h/2, sin h/2).
@@ -789,9 +798,11 @@ impl Strip {
     /// ends, [`Strip::g_rate`]), the next ones Newton steps with the exact
     /// dg/ds of the state reached, each kept inside the bracket (regula
     /// falsi, Illinois, where it would leave it); at most
-    /// [`UNLOAD_ITERATIONS`] integrations or until |g| < [`UNLOAD_G_TOL`].
-    /// Two integrations (|g| ≈ 1e-8, then round-off), where regula falsi
-    /// alone took 4–5, to the same point.
+    /// [`UNLOAD_ITERATIONS`] integrations or until |g| < [`UNLOAD_G_TOL`] or
+    /// the next Newton correction is below [`UNLOAD_ROOT_PER_STEP4`]·s_step⁴
+    /// (s_step = `a_h`/TURN_PER_STEP). Two integrations (|g| ≈ 1e-8, then
+    /// round-off) without the last criterion, where regula falsi alone took
+    /// 4–5, to the same point.
     #[allow(clippy::too_many_arguments)]
     fn locate_unload<const ISO: bool>(
         &self,
@@ -806,6 +817,8 @@ impl Strip {
         let (mut tl, mut gl, mut th, mut gh) = (0.0, g0, h, g1);
         let mut best = *p;
         let mut side = 0i32;
+        let s_step = a_h / TURN_PER_STEP;
+        let t_tol = UNLOAD_ROOT_PER_STEP4 * (s_step * s_step) * (s_step * s_step);
         let mut newton = hermite_root(
             g0,
             h * self.g_rate(p.sn, p.cs, p.nx, p.ny),
@@ -827,6 +840,10 @@ impl Strip {
             if gr.abs() < UNLOAD_G_TOL {
                 break;
             }
+            let dg = self.g_rate(r.sn, r.cs, r.nx, r.ny);
+            if (gr / dg).abs() <= t_tol {
+                break;
+            }
             if gr < 0.0 {
                 th = t;
                 gh = gr;
@@ -842,7 +859,7 @@ impl Strip {
                 }
                 side = 1;
             }
-            newton = t - gr / self.g_rate(r.sn, r.cs, r.nx, r.ny);
+            newton = t - gr / dg;
         }
         best
     }
