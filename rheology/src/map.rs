@@ -409,7 +409,10 @@ impl Map {
             let i = uq.floor() as i32;
             let j = (vq.floor() as i32).clamp(0, (N_THETA << q) - 1);
             let l = (wq.floor() as i32).clamp(0, (N_PHI << q) - 1);
-            if !self.cells.contains_key(&[q as i32, i, j, l]) && !self.afford(q, [i, j, l])? {
+            if self.budget.is_some()
+                && !self.cells.contains_key(&[q as i32, i, j, l])
+                && !self.afford(q, [i, j, l])?
+            {
                 self.stats.direct += 1;
                 self.stats.over_budget += 1;
                 return evaluate(&inp, Model::ElasticPlastic, Accuracy { tol: self.tol });
@@ -613,7 +616,10 @@ impl Map {
             let (vq, wq) = (v * f, w * f);
             let j = (vq.floor() as i32).clamp(0, (N_THETA << q) - 1);
             let l = (wq.floor() as i32).clamp(0, (N_PHI << q) - 1);
-            if !self.rigid_cells.contains_key(&[q as i32, j, l]) && !self.rigid_afford(q, [j, l])? {
+            if self.budget.is_some()
+                && !self.rigid_cells.contains_key(&[q as i32, j, l])
+                && !self.rigid_afford(q, [j, l])?
+            {
                 self.stats.rigid_direct += 1;
                 self.stats.rigid_over_budget += 1;
                 return crate::rigid_plastic(&inp, Accuracy { tol: self.tol });
