@@ -7,6 +7,9 @@
 //! * Dense: NDENSE states (default 10·N) of a slow slip sweep at fixed side slip and spin (one
 //!   region of J space), map off and on.
 //!
+//! * Warm-up: the 64 states of the contact bench's `Options::map` case
+//!   (trace 79072704, slip within ±1 %) cycled until a whole pass is
+//!   interpolated; the number of evaluations that took.
 //! * Rheology: N points (J1, J2 as above, k = 0.5, 1, 2, 5 in turn, one
 //!   map per k) through `map::Map` without and with `Budget::DEFAULT` and
 //!   directly (the sequence of docs/decisions/0043).
@@ -126,7 +129,36 @@ pub fn run(a: &[String]) -> Result<(), String> {
         );
         println!("  map counters: {s:?}");
     }
+    warm_up(tol);
     rheology(n, tol)
+}
+
+/// Evaluations until the contact bench's 64 warm states are all interpolated.
+fn warm_up(tol: f64) {
+    let c = contact(true, tol);
+    let hz = c.geometry().at_load(5000.0).unwrap();
+    let omega = 0.021 * 80.0 / (hz.a * hz.b).sqrt();
+    let states: Vec<OperatingState> = (0..64)
+        .map(|i| {
+            let du = 0.4 * (1.0 + 0.01 * (f64::from(i) * 0.37).sin());
+            OperatingState::new(5000.0, 80.0, du, 80.0 * 8.22e-3, omega, 73.0).unwrap()
+        })
+        .collect();
+    for pass in 1..=400 {
+        let before = c.map_stats().unwrap_or_default();
+        for st in &states {
+            c.evaluate(st).unwrap();
+        }
+        let s = c.map_stats().unwrap_or_default();
+        if s.direct == before.direct && s.rigid_direct == before.rigid_direct {
+            println!(
+                "warm-up (contact bench states): all 64 interpolated in pass {pass}, after {} evaluations; {s:?}",
+                64 * (pass - 1)
+            );
+            return;
+        }
+    }
+    println!("warm-up (contact bench states): not warm after 400 passes");
 }
 
 /// The rheology-level sequence: N points, k cycling through 0.5, 1, 2, 5.
