@@ -7,7 +7,8 @@
 //! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
 //!   random points;
 //! - `map-budget [N [TOL]]`: the contact's map against direct evaluation on a
-//!   scattered and a dense sequence of operating states.
+//!   scattered and a dense sequence of operating states; `map-budget-run
+//!   direct|free|budget [N [TOL]]`: one way only, for callgrind.
 //!
 //! These are not user examples: they measure the implementation.
 #![forbid(unsafe_code)]
@@ -35,7 +36,11 @@ commands:
                                   points, |J| log-uniform in [0.1, 10^(RLOG-1)]
   map-budget [N [TOL]]            the contact's map against direct evaluation: time and
                                   counters on N scattered and N dense states (default
-                                  2000, TOL 1e-3)";
+                                  2000, TOL 1e-3)
+  map-budget-run direct|free|budget [N [TOL]]
+                                  only the rheology-level scattered sequence, one way
+                                  (direct, map without budget, map with Budget::DEFAULT),
+                                  for callgrind (default N 200, TOL 1e-3)";
 
 fn main() -> std::process::ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -45,6 +50,7 @@ fn main() -> std::process::ExitCode {
         Some("prof-visco") => prof_visco::run(&args[1..]),
         Some("map-check") => map_check::run(&args[1..]),
         Some("map-budget") => map_budget::run(&args[1..]),
+        Some("map-budget-run") => map_budget::run_one(&args[1..]),
         Some("help" | "-h" | "--help") => {
             println!("{USAGE}");
             Ok(())

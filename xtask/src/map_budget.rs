@@ -161,18 +161,60 @@ fn warm_up(tol: f64) {
     println!("warm-up (contact bench states): not warm after 400 passes");
 }
 
+const KS: [f64; 4] = [0.5, 1.0, 2.0, 5.0];
+
 /// The rheology-level sequence: N points, k cycling through 0.5, 1, 2, 5.
-fn rheology(n: usize, tol: f64) -> Result<(), String> {
-    let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
-    let ks = [0.5, 1.0, 2.0, 5.0];
+fn rheology_points(n: usize) -> Vec<Inputs> {
     let mut xs = XorShift64::new(0x0043_0078_5eed_0001);
     let mut rnd = || xs.unit();
-    let pts: Vec<Inputs> = (0..n)
+    (0..n)
         .map(|i| {
             let (j1, j2, j3) = (10.0 * rnd() - 5.0, 10.0 * rnd() - 5.0, 5.0 + 21.0 * rnd());
-            Inputs::new(ks[i % 4], j1, j2, j3).unwrap()
+            Inputs::new(KS[i % 4], j1, j2, j3).unwrap()
+        })
+        .collect()
+}
+
+/// `map-budget-run direct|free|budget N TOL`: only the rheology-level
+/// sequence, one way (for callgrind: instruction counts do not depend on
+/// the machine's load).
+pub fn run_one(a: &[String]) -> Result<(), String> {
+    let which = a.first().ok_or("direct|free|budget missing")?.clone();
+    let (n, tol): (usize, f64) = (arg(a, 1, "N", Some(200))?, arg(a, 2, "TOL", Some(1e-3))?);
+    let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
+    let pts = rheology_points(n);
+    let budget = match which.as_str() {
+        "direct" => {
+            for p in &pts {
+                evaluate(p, Model::ElasticPlastic, acc).map_err(|e| e.to_string())?;
+            }
+            return Ok(());
+        }
+        "free" => None,
+        "budget" => Some(Budget::DEFAULT),
+        other => return Err(format!("`{other}`: expected direct, free or budget")),
+    };
+    let mut maps: Vec<Map> = KS
+        .iter()
+        .map(|&k| {
+            let m = Map::new(k, 0.0, 1.0, acc).unwrap();
+            match budget {
+                Some(b) => m.with_budget(b),
+                None => m,
+            }
         })
         .collect();
+    for (i, p) in pts.iter().enumerate() {
+        maps[i % 4].evaluate(p).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+/// The rheology-level sequence through maps without and with budget.
+fn rheology(n: usize, tol: f64) -> Result<(), String> {
+    let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
+    let ks = KS;
+    let pts = rheology_points(n);
     let t0 = Instant::now();
     for p in &pts {
         evaluate(p, Model::ElasticPlastic, acc).unwrap();
