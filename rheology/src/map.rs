@@ -210,6 +210,14 @@ impl Default for Budget {
     }
 }
 
+/// A cell looked up: accepted (its node values), rejected by its check, or
+/// not built because the map's [`Budget`] does not cover it now.
+enum Lookup<'a, S> {
+    Accepted(&'a S),
+    Rejected,
+    OverBudget,
+}
+
 /// 64 node values of an accepted cell, ρ fastest, then θ, then φ.
 type Stencil = Box<[[f64; 3]; 64]>;
 
@@ -413,25 +421,23 @@ impl Map {
             let i = uq.floor() as i32;
             let j = (vq.floor() as i32).clamp(0, (N_THETA << q) - 1);
             let l = (wq.floor() as i32).clamp(0, (N_PHI << q) - 1);
-            if self.budget.is_some()
-                && !self.cells.contains_key(&[q as i32, i, j, l])
-                && !self.afford(q, [i, j, l])?
-            {
-                self.stats.direct += 1;
-                self.stats.over_budget += 1;
-                return evaluate(&inp, Model::ElasticPlastic, Accuracy { tol: self.tol });
-            }
-            let (wi, wj, wl) = (
-                weights(uq - f64::from(i)),
-                weights(vq - f64::from(j)),
-                weights(wq - f64::from(l)),
-            );
-            if let Some(e) = self
-                .cell(q, [i, j, l])?
-                .map(|vals| interpolate(vals, &wi, &wj, &wl))
-            {
-                self.stats.interpolated += 1;
-                return Ok(unfold(e, s, [j1, j2, j3]));
+            match self.cell(q, [i, j, l])? {
+                Lookup::Accepted(vals) => {
+                    let (wi, wj, wl) = (
+                        weights(uq - f64::from(i)),
+                        weights(vq - f64::from(j)),
+                        weights(wq - f64::from(l)),
+                    );
+                    let e = interpolate(vals, &wi, &wj, &wl);
+                    self.stats.interpolated += 1;
+                    return Ok(unfold(e, s, [j1, j2, j3]));
+                }
+                Lookup::Rejected => {}
+                Lookup::OverBudget => {
+                    self.stats.direct += 1;
+                    self.stats.over_budget += 1;
+                    return evaluate(&inp, Model::ElasticPlastic, Accuracy { tol: self.tol });
+                }
             }
         }
         self.stats.direct += 1;
@@ -562,10 +568,14 @@ impl Map {
         accepted
     }
 
-    /// The cell of level q with lower corner (i, j, l): its stencil if accepted.
-    fn cell(&mut self, q: u32, c: [i32; 3]) -> Result<Option<&Stencil>, RheologyError> {
+    /// The cell of level q with lower corner (i, j, l), built (checked) on
+    /// first use when the budget, if any, covers it.
+    fn cell(&mut self, q: u32, c: [i32; 3]) -> Result<Lookup<'_, Stencil>, RheologyError> {
         let key = [q as i32, c[0], c[1], c[2]];
         if !self.cells.contains_key(&key) {
+            if !self.afford(q, c)? {
+                return Ok(Lookup::OverBudget);
+            }
             self.make_room();
             let mut vals: Stencil = Box::new([[0.0; 3]; 64]);
             for a in 0..4 {
@@ -592,7 +602,10 @@ impl Map {
             let accepted = self.check(e, ex);
             self.cells.insert(key, accepted.then_some(vals));
         }
-        Ok(self.cells.get(&key).and_then(|v| v.as_ref()))
+        Ok(match self.cells.get(&key) {
+            Some(Some(vals)) => Lookup::Accepted(vals),
+            _ => Lookup::Rejected,
+        })
     }
 
     /// The rigid/plastic model (`Model::RigidPlastic` of [`crate::evaluate`]) at the inputs
@@ -620,21 +633,19 @@ impl Map {
             let (vq, wq) = (v * f, w * f);
             let j = (vq.floor() as i32).clamp(0, (N_THETA << q) - 1);
             let l = (wq.floor() as i32).clamp(0, (N_PHI << q) - 1);
-            if self.budget.is_some()
-                && !self.rigid_cells.contains_key(&[q as i32, j, l])
-                && !self.rigid_afford(q, [j, l])?
-            {
-                self.stats.rigid_direct += 1;
-                self.stats.rigid_over_budget += 1;
-                return crate::rigid_plastic(&inp, Accuracy { tol: self.tol });
-            }
-            let (wj, wl) = (weights(vq - f64::from(j)), weights(wq - f64::from(l)));
-            if let Some(e) = self
-                .rigid_cell(q, [j, l])?
-                .map(|vals| interpolate2(vals, &wj, &wl))
-            {
-                self.stats.rigid_interpolated += 1;
-                return Ok(unfold(e, s, [j1, j2, j3]));
+            match self.rigid_cell(q, [j, l])? {
+                Lookup::Accepted(vals) => {
+                    let (wj, wl) = (weights(vq - f64::from(j)), weights(wq - f64::from(l)));
+                    let e = interpolate2(vals, &wj, &wl);
+                    self.stats.rigid_interpolated += 1;
+                    return Ok(unfold(e, s, [j1, j2, j3]));
+                }
+                Lookup::Rejected => {}
+                Lookup::OverBudget => {
+                    self.stats.rigid_direct += 1;
+                    self.stats.rigid_over_budget += 1;
+                    return crate::rigid_plastic(&inp, Accuracy { tol: self.tol });
+                }
             }
         }
         self.stats.rigid_direct += 1;
@@ -710,9 +721,12 @@ impl Map {
 
     /// The rigid/plastic cell of level q with lower corner (j, l), checked
     /// at its centre like the elastic/plastic cells.
-    fn rigid_cell(&mut self, q: u32, c: [i32; 2]) -> Result<Option<&Stencil2>, RheologyError> {
+    fn rigid_cell(&mut self, q: u32, c: [i32; 2]) -> Result<Lookup<'_, Stencil2>, RheologyError> {
         let key = [q as i32, c[0], c[1]];
         if !self.rigid_cells.contains_key(&key) {
+            if !self.rigid_afford(q, c)? {
+                return Ok(Lookup::OverBudget);
+            }
             self.rigid_make_room();
             let mut vals: Stencil2 = Box::new([[0.0; 3]; 16]);
             for a in 0..4 {
@@ -728,7 +742,10 @@ impl Map {
             let accepted = self.check(e, ex);
             self.rigid_cells.insert(key, accepted.then_some(vals));
         }
-        Ok(self.rigid_cells.get(&key).and_then(|v| v.as_ref()))
+        Ok(match self.rigid_cells.get(&key) {
+            Some(Some(vals)) => Lookup::Accepted(vals),
+            _ => Lookup::Rejected,
+        })
     }
 }
 

@@ -8,7 +8,8 @@
 //!   random points;
 //! - `map-budget [N [TOL]]`: the contact's map against direct evaluation on a
 //!   scattered and a dense sequence of operating states; `map-budget-run
-//!   direct|free|budget [N [TOL]]`: one way only, for callgrind.
+//!   direct|free|budget|dense-free|dense-budget [N [TOL]]`: one way only,
+//!   for callgrind.
 //!
 //! These are not user examples: they measure the implementation.
 #![forbid(unsafe_code)]
@@ -37,10 +38,12 @@ commands:
   map-budget [N [TOL]]            the contact's map against direct evaluation: time and
                                   counters on N scattered and N dense states (default
                                   2000, TOL 1e-3)
-  map-budget-run direct|free|budget [N [TOL]]
+  map-budget-run direct|free|budget|dense-free|dense-budget [N [TOL]]
                                   only the rheology-level scattered sequence, one way
                                   (direct, map without budget, map with Budget::DEFAULT),
-                                  for callgrind (default N 200, TOL 1e-3)";
+                                  or N calls of a warm traction curve through a map
+                                  without or with budget, for callgrind (default N 200,
+                                  TOL 1e-3)";
 
 fn main() -> std::process::ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();

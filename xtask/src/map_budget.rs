@@ -175,14 +175,30 @@ fn rheology_points(n: usize) -> Vec<Inputs> {
         .collect()
 }
 
-/// `map-budget-run direct|free|budget N TOL`: only the rheology-level
-/// sequence, one way (for callgrind: instruction counts do not depend on
-/// the machine's load).
+/// `map-budget-run direct|free|budget|dense-free|dense-budget N TOL`: only
+/// the rheology-level sequence, one way, or a warm traction curve through a
+/// map without or with budget (for callgrind: instruction counts do not
+/// depend on the machine's load).
 pub fn run_one(a: &[String]) -> Result<(), String> {
     let which = a.first().ok_or("direct|free|budget missing")?.clone();
     let (n, tol): (usize, f64) = (arg(a, 1, "N", Some(200))?, arg(a, 2, "TOL", Some(1e-3))?);
     let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
     let pts = rheology_points(n);
+    if let Some(mode) = which.strip_prefix("dense-") {
+        // N calls cycling over 64 points of a traction curve at k = 5
+        // (warm after the first few thousand): the per-call cost of a warm
+        // map is the difference of two runs with different N.
+        let mut map = Map::new(5.0, 0.0, 1.0, acc).map_err(|e| e.to_string())?;
+        if mode == "budget" {
+            map = map.with_budget(Budget::DEFAULT);
+        }
+        for i in 0..n {
+            let j1 = 0.5 + 0.01 * (i % 64) as f64;
+            let inp = Inputs::new(5.0, j1, 0.3, 4.0).map_err(|e| e.to_string())?;
+            std::hint::black_box(map.evaluate(&inp).map_err(|e| e.to_string())?);
+        }
+        return Ok(());
+    }
     let budget = match which.as_str() {
         "direct" => {
             for p in &pts {
