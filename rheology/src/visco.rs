@@ -193,11 +193,6 @@ struct Pt {
 }
 
 impl Pt {
-    fn new(s: f64) -> Self {
-        let (sn, cs) = s.sin_cos();
-        Pt { s, sn, cs }
-    }
-
     /// The point σ + d (|d| ≤ 1): sine and cosine of d by their Taylor
     /// series ([`sincos_small`]), then the rotation.
     #[inline]
@@ -286,7 +281,9 @@ trait Seg<const N: usize> {
 /// Interior of the cap: state Z.
 struct Interior<'a>(&'a VStrip);
 /// On the cap: state θ, Z = L·(cos θ, sin θ); n(θ) is evaluated by
-/// rotating n(θ0) of the step's start by θ − θ0.
+/// rotating n(θ0) of the step's start by θ − θ0. Only such differences
+/// enter, so θ is counted from the direction at the cap entry (θ = 0 there,
+/// n0 = Z/|Z|).
 struct Cap<'a> {
     st: &'a VStrip,
     th0: f64,
@@ -927,18 +924,27 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                         let hs = t * h1;
                         let e = ros_step(&inter, p, hs, &z, &ev0, &jac);
                         add(&mut q, &e.dq);
-                        p = Pt::new(p.s + hs);
+                        p = e.p1;
                         e.u
                     } else {
                         z
                     };
-                    let th = if zs[1] == 0.0 && zs[0] == 0.0 {
-                        st.b1.atan2(st.a)
+                    // The cap's angle is counted from the entry direction
+                    // n0 = Z/|Z| (only angle differences enter the cap's
+                    // equations): no atan2 and sin_cos per entry.
+                    let rs = zs[0].hypot(zs[1]);
+                    let n0 = if rs > 0.0 {
+                        (zs[0] / rs, zs[1] / rs)
                     } else {
-                        zs[1].atan2(zs[0])
+                        // At the inlet (Z = 0): the direction of (a, b1).
+                        let eb = st.a.hypot(st.b1);
+                        if eb > 0.0 {
+                            (st.a / eb, st.b1 / eb)
+                        } else {
+                            (1.0, 0.0)
+                        }
                     };
-                    let (s0, c0) = th.sin_cos();
-                    mode = Mode::Cap(th, (c0, s0));
+                    mode = Mode::Cap(0.0, n0);
                     switches += 1;
                 } else {
                     add(&mut q, &stp.dq);
@@ -985,7 +991,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                         let hs = t * h1;
                         let e = ros_step(&cap, p, hs, &u, &ev0, &jac);
                         add(&mut q, &e.dq);
-                        p = Pt::new(p.s + hs);
+                        p = e.p1;
                         e.u[0]
                     } else {
                         th
