@@ -36,9 +36,12 @@
 //! outside the cap, or a cap step that ends with λ < 0, is cut at the event
 //! located on the step's cubic Hermite interpolant (cap entry: Newton's
 //! method with the interpolant's exact derivative from the step's end;
-//! unloading: Illinois iteration) and repeated up to it; the state is then put onto (cap entry) or taken off
-//! (unloading) the cap, so an event is located to the interpolant's O(h⁴)
-//! instead of the first-order return of a fixed-step scheme.
+//! unloading: Illinois iteration). At a cap entry the state and the strip
+//! sums are the interpolant's there (the sums' interpolant has the
+//! integrands as slopes); an unloading repeats the step up to the event.
+//! The state is then put onto (cap entry) or taken off (unloading) the cap,
+//! so an event is located to the interpolant's O(h⁴) instead of the
+//! first-order return of a fixed-step scheme.
 //!
 //! **Across the contact** (Y = sin φ): adaptive Lobatto–Kronrod panels in
 //! φ (4-point Gauss–Lobatto rule and its 7-point Kronrod extension, which
@@ -950,11 +953,23 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                         p = p1;
                         stp.u
                     } else if t > 0.0 {
+                        // The state and the sums at the entry from the
+                        // step's Hermite interpolants (the sums' slopes are
+                        // their integrands fq) instead of the step repeated
+                        // up to it: m −4 % time, worst error/tol on 2000
+                        // random cases 0.60 / 0.51 → 0.59 / 0.54 at tol
+                        // 1e-3 / 1e-4 (docs/decisions/0076).
                         let hs = t * h1;
-                        let e = ros_step(&inter, p, hs, &z, &ev0, &jac);
-                        add(&mut q, &e.dq);
-                        p = e.p1;
-                        e.u
+                        let mut dq = [0.0; 3];
+                        for i in 0..3 {
+                            dq[i] = hermite(0.0, ev0.fq[i], stp.dq[i], ev1.fq[i], h1, t);
+                        }
+                        add(&mut q, &dq);
+                        p = p.advance(hs);
+                        [
+                            hermite(z[0], ev0.f[0], stp.u[0], ev1.f[0], h1, t),
+                            hermite(z[1], ev0.f[1], stp.u[1], ev1.f[1], h1, t),
+                        ]
                     } else {
                         z
                     };
