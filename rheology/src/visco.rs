@@ -60,7 +60,7 @@
 //! everywhere).
 //!
 //! Measured accuracy and cost: crate README, section "Viscoelastic model";
-//! what was tried instead: docs/decisions/0045 to 0048 and 0077. The former
+//! what was tried instead: docs/decisions/0045 to 0048, 0076 and 0077. The former
 //! fixed-grid scheme is kept in [`reference`] as the tests' independent
 //! reference.
 
