@@ -279,6 +279,17 @@ trait Seg<const N: usize> {
     fn inverse(&self, gi: f64, j: &[[f64; N]; N]) -> [[f64; N]; N];
     /// Weight of a state error in stress units, for a step from `p`.
     fn weight(&self, p: Pt) -> f64;
+    /// The product ∂fq/∂u · s.
+    #[inline(always)]
+    fn gq_dot(&self, gq: &[[f64; N]; 3], s: &[f64; N]) -> [f64; 3] {
+        let mut o = [0.0; 3];
+        for (i, row) in gq.iter().enumerate() {
+            for k in 0..N {
+                o[i] += row[k] * s[k];
+            }
+        }
+        o
+    }
 }
 
 /// Interior of the cap: state Z.
@@ -356,6 +367,12 @@ impl Seg<2> for Interior<'_> {
 
     fn weight(&self, _p: Pt) -> f64 {
         1.0
+    }
+
+    /// ∂fq/∂Z = [[X′, 0], [0, X′], [0, X′·X]]: its zeros skipped.
+    #[inline(always)]
+    fn gq_dot(&self, gq: &[[f64; 2]; 3], s: &[f64; 2]) -> [f64; 3] {
+        [gq[0][0] * s[0], gq[1][1] * s[1], gq[2][1] * s[1]]
     }
 }
 
@@ -653,14 +670,12 @@ fn ros_step<const N: usize, S: Seg<N>>(
     }
     // The strip sums (stages 3 and 4 evaluate f at the same point).
     let mut dq = [0.0; 3];
+    let gb = seg.gq_dot(&jac.gq, &sb);
+    let ge = seg.gq_dot(&jac.gq, &se);
     for i in 0..3 {
         let thq = h * jac.tq[i];
-        let mut vb = QB[0] * ev0.fq[i] + QB[1] * e2.fq[i] + (QB[2] + QB[3]) * e3.fq[i] + QBG * thq;
-        let mut ve = QE[0] * ev0.fq[i] + QE[1] * e2.fq[i] + (QE[2] + QE[3]) * e3.fq[i] + QEG * thq;
-        for k in 0..N {
-            vb += jac.gq[i][k] * sb[k];
-            ve += jac.gq[i][k] * se[k];
-        }
+        let vb = QB[0] * ev0.fq[i] + QB[1] * e2.fq[i] + (QB[2] + QB[3]) * e3.fq[i] + QBG * thq + gb[i];
+        let ve = QE[0] * ev0.fq[i] + QE[1] * e2.fq[i] + (QE[2] + QE[3]) * e3.fq[i] + QEG * thq + ge[i];
         dq[i] = h * vb;
         err = err.max((h * ve).abs());
         sum += dq[i];
