@@ -674,8 +674,10 @@ fn ros_step<const N: usize, S: Seg<N>>(
     let ge = seg.gq_dot(&jac.gq, &se);
     for i in 0..3 {
         let thq = h * jac.tq[i];
-        let vb = QB[0] * ev0.fq[i] + QB[1] * e2.fq[i] + (QB[2] + QB[3]) * e3.fq[i] + QBG * thq + gb[i];
-        let ve = QE[0] * ev0.fq[i] + QE[1] * e2.fq[i] + (QE[2] + QE[3]) * e3.fq[i] + QEG * thq + ge[i];
+        let vb =
+            QB[0] * ev0.fq[i] + QB[1] * e2.fq[i] + (QB[2] + QB[3]) * e3.fq[i] + QBG * thq + gb[i];
+        let ve =
+            QE[0] * ev0.fq[i] + QE[1] * e2.fq[i] + (QE[2] + QE[3]) * e3.fq[i] + QEG * thq + ge[i];
         dq[i] = h * vb;
         err = err.max((h * ve).abs());
         sum += dq[i];
@@ -974,7 +976,11 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                             let dy = hermite_dt(z[1], ev0.f[1], stp.u[1], ev1.f[1], h1, t);
                             let pt = p.advance(t * h1);
                             let r = (zx * zx + zy * zy).sqrt();
-                            let dr = if r > 0.0 { (zx * dx + zy * dy) / r } else { 0.0 };
+                            let dr = if r > 0.0 {
+                                (zx * dx + zy * dy) / r
+                            } else {
+                                0.0
+                            };
                             (r - lcap(pt.sn), dr - 1.5 * st.c * pt.cs * h1)
                         };
                         let r0 = (z[0] * z[0] + z[1] * z[1]).sqrt();
