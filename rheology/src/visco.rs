@@ -717,10 +717,11 @@ fn hermite_dt(y0: f64, m0: f64, y1: f64, m1: f64, h: f64, t: f64) -> f64 {
 /// first Newton update below 1e-6, applied (the convergence is quadratic:
 /// the bench cases' values are the same to 10 digits as with 1e-10, one
 /// evaluation fewer per entry), or a bracket narrower than 1e-10. On the
-/// bench cases at tol = 1e-3 (with 1e-10): 5–9 evaluations per
-/// entry on average, against 9.5–12 of [`event`] and 4–13 of Newton from the
-/// secant point (13 in the anisotropic case g, whose g has a minimum inside
-/// the step; docs/decisions/0048).
+/// bench cases at tol = 1e-3 (with |H|² − L² and 1e-10): 5–9 evaluations
+/// per entry on average, against 9.5–12 of [`event`] and 4–13 of Newton
+/// from the secant point (13 in the anisotropic case g, whose g has a
+/// minimum inside the step; docs/decisions/0048); with |H| − L 4 on case l,
+/// where |H|² − L² took 12 (docs/decisions/0076).
 fn event_newton(gd: impl Fn(f64) -> (f64, f64), g0: f64, g1: f64) -> f64 {
     let (mut a, mut fa, mut b, mut fb) = (0.0, g0, 1.0, g1);
     let mut t = 1.0;
