@@ -196,6 +196,19 @@ struct Pt {
 }
 
 impl Pt {
+    /// The points σ + d1 and σ + d2 (|d2| ≤ |d1| ≤ 1), by
+    /// [`sincos_small2`].
+    #[inline]
+    fn advance2(&self, d1: f64, d2: f64) -> (Self, Self) {
+        let ((s1, c1), (s2, c2)) = sincos_small2(d1, d2);
+        let rot = |sd: f64, cd: f64, d: f64| Pt {
+            s: self.s + d,
+            sn: self.sn * cd + self.cs * sd,
+            cs: self.cs * cd - self.sn * sd,
+        };
+        (rot(s1, c1, d1), rot(s2, c2, d2))
+    }
+
     /// The point σ + d (|d| ≤ 1): sine and cosine of d by their Taylor
     /// series ([`sincos_small`]), then the rotation.
     #[inline]
@@ -209,6 +222,36 @@ impl Pt {
     }
 }
 
+/// One of the [`horner`] polynomial pairs.
+type Horner = fn(&[f64; 8], &[f64; 8], f64) -> (f64, f64);
+
+/// [`sincos_small`] of d1 and d2 (|d2| ≤ |d1| ≤ 1) with the number of
+/// terms of d1 for both: one branch on the tier instead of two.
+#[inline]
+fn sincos_small2(d1: f64, d2: f64) -> ((f64, f64), (f64, f64)) {
+    let ad = d1.abs();
+    if ad > 1.0 {
+        return (d1.sin_cos(), d2.sin_cos());
+    }
+    let (x1, x2) = (d1 * d1, d2 * d2);
+    let both = |n: Horner| {
+        let (s1, c1) = n(&SIN_T, &COS_T, x1);
+        let (s2, c2) = n(&SIN_T, &COS_T, x2);
+        ((d1 * s1, c1), (d2 * s2, c2))
+    };
+    if ad < 0.037 {
+        both(horner::<3>)
+    } else if ad < 0.114 {
+        both(horner::<4>)
+    } else if ad < 0.245 {
+        both(horner::<5>)
+    } else if ad < 0.436 {
+        both(horner::<6>)
+    } else {
+        both(horner::<7>)
+    }
+}
+
 /// (sin d, cos d) by their Taylor series for |d| ≤ 1 (relative error
 /// < 1e-16 up to |d| = 0.43, < 5e-14 at |d| = 1), by libm beyond. The
 /// number of terms follows |d| (the cap's direction moves little within a
@@ -216,28 +259,8 @@ impl Pt {
 /// each tier, sin d to d^(2n+1).
 #[inline]
 fn sincos_small(d: f64) -> (f64, f64) {
-    // Taylor coefficients of sin d/d and cos d in d²: (−1)^i/(2i+1)!,
-    // (−1)^i/(2i)!.
-    const S: [f64; 8] = [
-        1.0,
-        -1.0 / 6.0,
-        1.0 / 120.0,
-        -1.0 / 5040.0,
-        1.0 / 362_880.0,
-        -1.0 / 39_916_800.0,
-        1.0 / 6_227_020_800.0,
-        -1.0 / 1_307_674_368_000.0,
-    ];
-    const C: [f64; 8] = [
-        1.0,
-        -1.0 / 2.0,
-        1.0 / 24.0,
-        -1.0 / 720.0,
-        1.0 / 40_320.0,
-        -1.0 / 3_628_800.0,
-        1.0 / 479_001_600.0,
-        -1.0 / 87_178_291_200.0,
-    ];
+    const S: [f64; 8] = SIN_T;
+    const C: [f64; 8] = COS_T;
     let ad = d.abs();
     if ad > 1.0 {
         return d.sin_cos();
@@ -258,6 +281,29 @@ fn sincos_small(d: f64) -> (f64, f64) {
     };
     (d * sv, cv)
 }
+
+/// Taylor coefficients of sin d/d and cos d in d²: (−1)^i/(2i+1)!,
+/// (−1)^i/(2i)!.
+const SIN_T: [f64; 8] = [
+    1.0,
+    -1.0 / 6.0,
+    1.0 / 120.0,
+    -1.0 / 5040.0,
+    1.0 / 362_880.0,
+    -1.0 / 39_916_800.0,
+    1.0 / 6_227_020_800.0,
+    -1.0 / 1_307_674_368_000.0,
+];
+const COS_T: [f64; 8] = [
+    1.0,
+    -1.0 / 2.0,
+    1.0 / 24.0,
+    -1.0 / 720.0,
+    1.0 / 40_320.0,
+    -1.0 / 3_628_800.0,
+    1.0 / 479_001_600.0,
+    -1.0 / 87_178_291_200.0,
+];
 
 /// The polynomials Σ_{i ≤ N} s_i·x^i and Σ_{i ≤ N} c_i·x^i (Horner).
 #[inline(always)]
@@ -639,7 +685,7 @@ fn ros_step<const N: usize, S: Seg<N>>(
         y[k] += A21 * u1[k];
         cu[k] = C21 * u1[k];
     }
-    let p1 = p.advance(ALPHA2 * h);
+    let (p1, p3) = p.advance2(ALPHA2 * h, ALPHA3 * h);
     let e2 = seg.eval(p1, &y);
     let u2 = stage(&e2, G2, cu);
     let mut y = *u;
@@ -647,7 +693,7 @@ fn ros_step<const N: usize, S: Seg<N>>(
         y[k] += A31 * u1[k] + A32 * u2[k];
         cu[k] = C31 * u1[k] + C32 * u2[k];
     }
-    let e3 = seg.eval(p.advance(ALPHA3 * h), &y);
+    let e3 = seg.eval(p3, &y);
     let u3 = stage(&e3, G3, cu);
     for k in 0..N {
         cu[k] = C41 * u1[k] + C42 * u2[k] + C43 * u3[k];
