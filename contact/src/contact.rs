@@ -5,6 +5,7 @@ use std::f64::consts::PI;
 
 use traction_hertz::{Body, Geometry};
 use traction_rheology::Inputs;
+use traction_rheology::map::Budget;
 
 use crate::error::ContactError;
 use crate::fluid::correlate;
@@ -159,6 +160,13 @@ impl TractionContact {
             && map.key() == (self.geometry.k, 0.0, 1.0)
             && map.tol() == self.options.accuracy.tol();
         if ok {
+            // The contact's maps spend within its budget (a map built
+            // elsewhere without it gets it, with the initial credit).
+            let map = if map.budget() == Some(Budget::DEFAULT) {
+                map
+            } else {
+                map.with_budget(Budget::DEFAULT)
+            };
             *self.map.lock() = Some(map);
         }
         ok
@@ -310,7 +318,10 @@ impl TractionContact {
         let mut slot = self.map.lock();
         let map = match slot.as_mut() {
             Some(map) => map,
-            None => slot.insert(Map::new(self.geometry.k, 0.0, 1.0, self.options.accuracy)?),
+            None => slot.insert(
+                Map::new(self.geometry.k, 0.0, 1.0, self.options.accuracy)?
+                    .with_budget(Budget::DEFAULT),
+            ),
         };
         Ok(f(map)?)
     }

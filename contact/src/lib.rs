@@ -166,7 +166,7 @@ pub use thermal::{Film, Thermal};
 pub use traction_compliance::{Direction, DiscMaterial, KALKER_POISSON_RANGE};
 pub use traction_hertz::Body;
 pub use traction_kinematics::ANGLE_RANGE;
-pub use traction_rheology::map::{Map, MapStats};
+pub use traction_rheology::map::{Budget, Map, MapStats};
 pub use traction_rheology::{
     Accuracy, DEBORAH_RANGE, Limit, Model, Modulus, Properties, REFERENCE_STRESS_RANGE,
     TOLERANCE_RANGE,

@@ -379,11 +379,13 @@ fn interpolation_map_option() {
     // Options::map: the same contact with the rheology's interpolation map
     // instead of direct integration. Forces within the accuracy: |ΔJ4..6| ≤
     // tol = 1e-3 (the map's own contract, rheology/tests/map.rs) against the
-    // direct result at 1e-5; a slip sweep at spin reuses cells (≥ 80 %
-    // interpolated); the regime classification uses the map's rigid/plastic
-    // solution and agrees; with compliance (gy ≠ 1) the elastic/plastic map
-    // is not used and the forces are bit-identical to the direct ones; a
-    // clone carries the map.
+    // direct result at 1e-5; a slip sweep at spin (60 states) repeated 40
+    // times builds its cells within the map's budget (≈ 1300 node
+    // evaluations at 0.5 per call) and then reuses them (the last pass ≥
+    // 80 % interpolated); the regime classification uses the
+    // map's rigid/plastic solution and agrees; with compliance (gy ≠ 1) the
+    // elastic/plastic map is not used and the forces are bit-identical to
+    // the direct ones; a clone carries the map.
     let acc = Accuracy::new(1e-3).unwrap();
     let fluid = Fluid::constant(35.0, 0.075).unwrap();
     let mapped = contact(
@@ -405,20 +407,32 @@ fn interpolation_map_option() {
     );
     assert!(mapped.map_stats().is_none());
     // Spin 40 and 400 rad/s: J3 ≈ 2 and 21 (the report's high-spin traces).
-    for n in 0..60 {
-        let du = 0.002 * (n % 30) as f64 - 0.03;
-        let w = if n < 30 { 40.0 } else { 400.0 };
-        let st = state(1500.0, 20.0, du, 0.01, w);
-        let (m, d) = (mapped.evaluate(&st).unwrap(), direct.evaluate(&st).unwrap());
-        for (x, y) in [(m.j4, d.j4), (m.j5, d.j5), (m.j6, d.j6)] {
-            assert!((x - y).abs() <= 1e-3, "du {du}: {x} vs {y}");
+    let states: Vec<_> = (0..60)
+        .map(|n| {
+            let du = 0.002 * (n % 30) as f64 - 0.03;
+            let w = if n < 30 { 40.0 } else { 400.0 };
+            state(1500.0, 20.0, du, 0.01, w)
+        })
+        .collect();
+    let references: Vec<_> = states
+        .iter()
+        .map(|st| direct.evaluate(st).unwrap())
+        .collect();
+    let mut last = MapStats::default();
+    for pass in 0..40 {
+        last = mapped.map_stats().unwrap_or_default();
+        for (st, d) in states.iter().zip(&references) {
+            let m = mapped.evaluate(st).unwrap();
+            for (x, y) in [(m.j4, d.j4), (m.j5, d.j5), (m.j6, d.j6)] {
+                assert!((x - y).abs() <= 1e-3, "pass {pass} {st:?}: {x} vs {y}");
+            }
+            assert!((m.fx - d.fx).abs() <= 1e-3 * d.mu_force * 1500.0);
+            assert_eq!(m.regime, d.regime, "{st:?}");
+            assert!(m.loss >= 0.0 && m.j7 >= 0.0);
         }
-        assert!((m.fx - d.fx).abs() <= 1e-3 * d.mu_force * 1500.0);
-        assert_eq!(m.regime, d.regime, "du {du} w {w}");
-        assert!(m.loss >= 0.0 && m.j7 >= 0.0);
     }
     let s = mapped.map_stats().unwrap();
-    assert!(s.interpolated >= 48, "{s:?}");
+    assert!(s.interpolated - last.interpolated >= 48, "{s:?}");
     let copy = mapped.clone();
     assert_eq!(copy.map_stats(), mapped.map_stats());
     let st = state(1500.0, 20.0, 0.011, 0.01, 40.0);
@@ -460,6 +474,141 @@ fn interpolation_map_option() {
     let s1 = c1.map_stats().unwrap_or_default();
     assert_eq!(s1.interpolated + s1.direct, 0, "{s1:?}");
     assert_eq!(e1.regime, e0.regime);
+}
+
+/// The k ≈ 5 contact of `interpolation_map_option` with the map at tol.
+fn mapped_k5(tol: f64) -> TractionContact {
+    contact(
+        hs_k5(),
+        Fluid::constant(35.0, 0.075).unwrap(),
+        Options {
+            accuracy: Accuracy::new(tol).unwrap(),
+            map: true,
+            ..Options::default()
+        },
+    )
+}
+
+/// ΔU, ΔV (m/s) and ω (rad/s) of the state at load 1500 N, U = 20 m/s with
+/// the given J1, J2, J3 on `c` (the J groups are linear in them there).
+fn state_at_j(c: &TractionContact, j: [f64; 3]) -> OperatingState {
+    let unit = c.evaluate(&state(1500.0, 20.0, 1e-3, 1e-3, 1.0)).unwrap();
+    state(
+        1500.0,
+        20.0,
+        j[0] * 1e-3 / unit.j1,
+        j[1] * 1e-3 / unit.j2,
+        j[2] / unit.j3,
+    )
+}
+
+/// Node evaluations and cell checks the map spent, and the calls that
+/// could earn credit (looked up a cell), elastic/plastic and rigid/plastic
+/// together.
+fn spent_and_calls(s: &MapStats) -> (u64, u64) {
+    (
+        s.nodes_computed + s.cells_checked,
+        s.interpolated + s.direct + s.rigid_interpolated + s.rigid_direct,
+    )
+}
+
+#[test]
+fn interpolation_map_budget() {
+    // The map's budget (traction-rheology Budget::DEFAULT): every call earns
+    // 0.5 node evaluations, building a cell spends its new nodes and check.
+    // Scattered states with spin (|J1|, |J2| ≤ 5, J3 in [5, 26], random):
+    // the map spends at most 0.5 node evaluations per call (nodes cost
+    // 1.4–7 direct evaluations, so ≤ 4.5 direct evaluations per call in
+    // all) — counted, not timed — where the map without budget spends more
+    // than 8 per call on the same J's; every value within tol = 1e-3 of
+    // the direct one at 1e-5 (the map's contract, interpolated or direct).
+    // A dense sequence (slip oscillating in a small region) still builds
+    // its cells and ends up interpolated. The same sequence twice gives
+    // bit-identical results, and so does a clone taken mid-way (the credit
+    // is part of the cache).
+    let tol = 1e-3;
+    let reference = contact(
+        hs_k5(),
+        Fluid::constant(35.0, 0.075).unwrap(),
+        Options {
+            accuracy: Accuracy::new(1e-5).unwrap(),
+            ..Options::default()
+        },
+    );
+    let mapped = mapped_k5(tol);
+    let mut rng = traction_testkit::XorShift64::new(0x5eed_0078);
+    let scattered: Vec<OperatingState> = (0..60)
+        .map(|_| {
+            let j = [
+                10.0 * rng.unit() - 5.0,
+                10.0 * rng.unit() - 5.0,
+                5.0 + 21.0 * rng.unit(),
+            ];
+            state_at_j(&reference, j)
+        })
+        .collect();
+    let mut js = Vec::new();
+    for st in &scattered {
+        let (m, d) = (
+            mapped.evaluate(st).unwrap(),
+            reference.evaluate(st).unwrap(),
+        );
+        for (x, y) in [(m.j4, d.j4), (m.j5, d.j5), (m.j6, d.j6)] {
+            assert!((x - y).abs() <= tol, "{st:?}: {x} vs {y}");
+        }
+        js.push(Inputs::new(m.k, m.j1, m.j2, m.j3).unwrap());
+    }
+    let s = mapped.map_stats().unwrap();
+    let (spent, calls) = spent_and_calls(&s);
+    assert!(calls >= 60 && 2 * spent <= calls, "{s:?}");
+    // The same J's through a map without budget.
+    let mut unbounded =
+        Map::new(mapped.geometry().k, 0.0, 1.0, Accuracy::new(tol).unwrap()).unwrap();
+    for inp in &js {
+        unbounded.evaluate(inp).unwrap();
+    }
+    let u = unbounded.stats();
+    assert!(u.nodes_computed + u.cells_checked > 8 * 60, "{u:?}");
+    // Dense: ΔU/U oscillating within ±0.02 % at J2 ≈ 0.5, J3 ≈ 10.
+    let centre = state_at_j(&reference, [0.5, 0.5, 10.0]);
+    let dense: Vec<OperatingState> = (0..1200)
+        .map(|i| OperatingState {
+            slip: centre.slip * (1.0 + 0.1 * (f64::from(i) * 0.05).sin()),
+            ..centre
+        })
+        .collect();
+    let fresh = mapped_k5(tol);
+    let mut clone = None;
+    let mut results = Vec::new();
+    for (i, st) in dense.iter().enumerate() {
+        if i == 600 {
+            clone = Some(fresh.clone());
+        }
+        results.push(fresh.evaluate(st).unwrap());
+    }
+    let s = fresh.map_stats().unwrap();
+    let (spent, calls) = spent_and_calls(&s);
+    assert!(2 * spent <= calls && s.cells_checked > 0, "{s:?}");
+    // Built within the first half, interpolated from then on.
+    let mid = clone.as_ref().and_then(TractionContact::map_stats).unwrap();
+    assert_eq!(s.interpolated - mid.interpolated, 600, "{mid:?} {s:?}");
+    for (st, m) in dense.iter().zip(&results).step_by(50) {
+        let d = reference.evaluate(st).unwrap();
+        for (x, y) in [(m.j4, d.j4), (m.j5, d.j5), (m.j6, d.j6)] {
+            assert!((x - y).abs() <= tol, "{st:?}: {x} vs {y}");
+        }
+    }
+    // Same sequence, same results (bit for bit), from the start and from
+    // the clone's history on.
+    let again = mapped_k5(tol);
+    for (st, r) in dense.iter().zip(&results) {
+        assert_eq!(&again.evaluate(st).unwrap(), r);
+    }
+    assert_eq!(again.map_stats(), fresh.map_stats());
+    let clone = clone.unwrap();
+    for (st, r) in dense.iter().zip(&results).skip(600) {
+        assert_eq!(&clone.evaluate(st).unwrap(), r);
+    }
 }
 
 #[test]

@@ -38,22 +38,48 @@
 //!   k = 3, gy = 0.5; k = 0.5, ΔX = −0.2, gy = 3; 500 points each at 1e-3,
 //!   and k = 1, ΔX = 0.3, gy = 2, 400 at 1e-4): ≤ 0.25·tol.
 //!   rheology/tests/map.rs checks ≤ tol on 600 random points (k = 0.1 …
-//!   10), with ΔX and gy ≠ 1, and along a curve.
+//!   10), with ΔX and gy ≠ 1, and along a curve. The check can miss: at
+//!   k = 5.036, J = (−3.3695, 2.5334, 24.4107), tol = 1e-3 (a scattered
+//!   sequence of `cargo xtask map-budget`, near the singular surface
+//!   below) the accepted level-0 cell gives J5 1.9·tol from the direct
+//!   value at tol/100.
 //! * **Rigid/plastic.** [`Map::rigid_plastic`] maps the rigid/plastic
 //!   solution the same way over the direction (θ, φ) alone (it does not
 //!   depend on |J|): bicubic, checked and refined alike.
-//! * **Determinism.** A result depends only on the inputs, never on which
-//!   cells happened to be built before (nodes and checks are pure functions
-//!   of their indices), so clearing the cache or evaluating in another order
-//!   gives bit-identical results.
+//! * **Determinism.** Without a budget, a result depends only on the
+//!   inputs, never on which cells happened to be built before (nodes and
+//!   checks are pure functions of their indices), so clearing the cache or
+//!   evaluating in another order gives bit-identical results.
 //! * **Cost.** An accepted cell costs one hash lookup per level and 192
 //!   multiply-adds (0.12–0.21 µs measured, crate README); a new cell up to 65
-//!   direct evaluations at tol/10 (milliseconds, tens of milliseconds at high
-//!   spin), amortised over the calls that reuse it: a map pays off for
-//!   thousands of evaluations in a region of J space (a co-simulation near
-//!   an operating point), not for scattered single points, where it is
-//!   ~50× slower than [`crate::evaluate`]. The cache is bounded
-//!   ([`MAX_CELLS`] cells, then cleared).
+//!   direct evaluations at tol/10 ([`CELL_COST`]; milliseconds, tens of
+//!   milliseconds at high spin), amortised over the calls that reuse it: a
+//!   map pays off for thousands of evaluations in a region of J space (a
+//!   co-simulation near an operating point), not for scattered single
+//!   points, where a map without budget is ~8–30× slower than
+//!   [`crate::evaluate`]. The cache is bounded ([`MAX_CELLS`] cells, then
+//!   cleared).
+//! * **Budget** ([`Map::with_budget`], used by traction-contact's map,
+//!   docs/decisions/0078). A token bucket of node evaluations: every call
+//!   that looks up a cell earns [`Budget::per_call`] (0.5 by default, kept
+//!   up to [`Budget::cap`], 130), and a new cell is built when the credit
+//!   covers its new nodes plus its check (spent then). A point whose cell
+//!   (at any level) is not built and not covered is evaluated directly at
+//!   tol; the credit there is spent on the cell's new nodes (in index
+//!   order), so that the cell is completed over the following calls. No
+//!   call spends more than [`Budget::limit`] (65, one new cell). The
+//!   elastic/plastic and the rigid/plastic cells have a credit each,
+//!   starting at [`Budget::initial`] (0: the first calls of a new map are
+//!   direct). A node costs 1.4–7 direct evaluations at tol, so on any
+//!   sequence of inputs the map costs at most ≈ 1 + 0.5·7 ≈ 4.5 direct
+//!   evaluations per call amortised — measured on scattered points with
+//!   spin (`cargo xtask map-budget`): 1.5–2.2× direct, against 8–31×
+//!   without budget — while a region visited often is built within about
+//!   two calls per node it needs and then interpolated. The price: a
+//!   result depends on the calls before (whether the credit had covered
+//!   its cell). The same calls on the same map give bit-identical results
+//!   (the credit is part of the map: a clone continues alike), and a value
+//!   is within tol of the direct one either way.
 //!
 //! Points with J3 = 0 and gy = 1 use the exact closed form; |x| > 10¹⁰ and
 //! J = 0 go straight to [`crate::evaluate`].
@@ -105,6 +131,91 @@ pub struct MapStats {
     pub rigid_interpolated: u64,
     /// Rigid/plastic evaluations answered directly.
     pub rigid_direct: u64,
+    /// Of `direct`: evaluations answered directly because the credit of the
+    /// map's [`Budget`] did not cover the new cell they needed.
+    pub over_budget: u64,
+    /// Of `rigid_direct`: the same for the rigid/plastic map.
+    pub rigid_over_budget: u64,
+}
+
+/// Node evaluations of a new elastic/plastic cell at most: its 64 nodes and
+/// the check at its centre.
+pub const CELL_COST: f64 = 65.0;
+
+/// A credit of node evaluations that a [`Map`] may spend on new cells (a
+/// token bucket), so that the map costs at most a few direct evaluations per
+/// call on any sequence of inputs; see the [module docs](self).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Budget {
+    per_call: f64,
+    initial: f64,
+    cap: f64,
+    limit: f64,
+}
+
+impl Budget {
+    /// The budget of traction-contact's map (`Options::map`): 0.5 node
+    /// evaluations earned per call, none at the start, at most
+    /// 2 × [`CELL_COST`] = 130 kept, at most [`CELL_COST`] = 65 (one new
+    /// cell) spent in one call (docs/decisions/0078).
+    pub const DEFAULT: Budget = Budget {
+        per_call: 0.5,
+        initial: 0.0,
+        cap: 2.0 * CELL_COST,
+        limit: CELL_COST,
+    };
+
+    /// A budget: `per_call` node evaluations earned per evaluation that
+    /// looks up a cell (in [0, 65]), `initial` credit of a new map (in
+    /// [0, cap]), `cap`, the largest credit kept (in [1, 1e9]) and `limit`,
+    /// the most spent in one call (in [1, 1e9]). Out of range:
+    /// [`RheologyError::OutOfRange`] naming the quantity.
+    pub fn new(per_call: f64, initial: f64, cap: f64, limit: f64) -> Result<Budget, RheologyError> {
+        Range::closed(0.0, CELL_COST).check("map budget per_call", per_call)?;
+        Range::closed(1.0, 1e9).check("map budget cap", cap)?;
+        Range::closed(0.0, cap).check("map budget initial", initial)?;
+        Range::closed(1.0, 1e9).check("map budget limit", limit)?;
+        Ok(Budget {
+            per_call,
+            initial,
+            cap,
+            limit,
+        })
+    }
+
+    /// Node evaluations earned per call.
+    pub fn per_call(&self) -> f64 {
+        self.per_call
+    }
+
+    /// Credit of a new map.
+    pub fn initial(&self) -> f64 {
+        self.initial
+    }
+
+    /// Largest credit kept.
+    pub fn cap(&self) -> f64 {
+        self.cap
+    }
+
+    /// Most credit spent in one call.
+    pub fn limit(&self) -> f64 {
+        self.limit
+    }
+}
+
+impl Default for Budget {
+    fn default() -> Self {
+        Budget::DEFAULT
+    }
+}
+
+/// A cell looked up: accepted (its node values), rejected by its check, or
+/// not built because the map's [`Budget`] does not cover it now.
+enum Lookup<'a, S> {
+    Accepted(&'a S),
+    Rejected,
+    OverBudget,
 }
 
 /// 64 node values of an accepted cell, ρ fastest, then θ, then φ.
@@ -167,6 +278,11 @@ pub struct Map {
     rigid_nodes: Index2,
     rigid_cells: Cells2,
     stats: MapStats,
+    budget: Option<Budget>,
+    /// Credit of the elastic/plastic and of the rigid/plastic cells.
+    credit: [f64; 2],
+    /// What the current call may still spend.
+    allowance: f64,
 }
 
 impl std::fmt::Debug for IndexHasher {
@@ -196,7 +312,34 @@ impl Map {
             rigid_nodes: Index2::default(),
             rigid_cells: Cells2::default(),
             stats: MapStats::default(),
+            budget: None,
+            credit: [0.0; 2],
+            allowance: 0.0,
         })
+    }
+
+    /// This map with a [`Budget`] for new cells (credit set to its initial
+    /// value; the elastic/plastic and the rigid/plastic cells have a credit
+    /// each): a point whose cell is not built yet is evaluated directly when
+    /// the credit does not cover the cell's new nodes. Results then depend
+    /// on the calls before (each within tol of the direct value), see the
+    /// [module docs](self).
+    #[must_use]
+    pub fn with_budget(mut self, budget: Budget) -> Map {
+        self.budget = Some(budget);
+        self.credit = [budget.initial; 2];
+        self
+    }
+
+    /// The map's budget (None: every cell a point needs is built).
+    pub fn budget(&self) -> Option<Budget> {
+        self.budget
+    }
+
+    /// The credit left (node evaluations) for elastic/plastic and for
+    /// rigid/plastic cells; None without a budget.
+    pub fn credit(&self) -> Option<[f64; 2]> {
+        self.budget.map(|_| self.credit)
     }
 
     /// Aspect ratio, spin-pole offset and stiffness ratio of this map.
@@ -214,7 +357,8 @@ impl Map {
         self.stats
     }
 
-    /// Drop all cached nodes and cells (results do not change).
+    /// Drop all cached nodes and cells (results of a map without budget do
+    /// not change; the credit is kept).
     pub fn clear(&mut self) {
         self.nodes.clear();
         self.cells.clear();
@@ -270,23 +414,30 @@ impl Map {
         let u = r.asinh() / H_RHO;
         let v = (x[2] / r).clamp(-1.0, 1.0).acos() * (f64::from(N_THETA) / PI);
         let w = x[1].atan2(x[0]) * (2.0 * f64::from(N_PHI) / PI);
+        self.earn(0);
         for q in 0..=MAX_LEVEL {
             let f = f64::from(1u32 << q);
             let (uq, vq, wq) = (u * f, v * f, w * f);
             let i = uq.floor() as i32;
             let j = (vq.floor() as i32).clamp(0, (N_THETA << q) - 1);
             let l = (wq.floor() as i32).clamp(0, (N_PHI << q) - 1);
-            let (wi, wj, wl) = (
-                weights(uq - f64::from(i)),
-                weights(vq - f64::from(j)),
-                weights(wq - f64::from(l)),
-            );
-            if let Some(e) = self
-                .cell(q, [i, j, l])?
-                .map(|vals| interpolate(vals, &wi, &wj, &wl))
-            {
-                self.stats.interpolated += 1;
-                return Ok(unfold(e, s, [j1, j2, j3]));
+            match self.cell(q, [i, j, l])? {
+                Lookup::Accepted(vals) => {
+                    let (wi, wj, wl) = (
+                        weights(uq - f64::from(i)),
+                        weights(vq - f64::from(j)),
+                        weights(wq - f64::from(l)),
+                    );
+                    let e = interpolate(vals, &wi, &wj, &wl);
+                    self.stats.interpolated += 1;
+                    return Ok(unfold(e, s, [j1, j2, j3]));
+                }
+                Lookup::Rejected => {}
+                Lookup::OverBudget => {
+                    self.stats.direct += 1;
+                    self.stats.over_budget += 1;
+                    return evaluate(&inp, Model::ElasticPlastic, Accuracy { tol: self.tol });
+                }
             }
         }
         self.stats.direct += 1;
@@ -311,6 +462,71 @@ impl Map {
         Ok([o.j4, o.j5, o.j6])
     }
 
+    /// Add a call's credit (`which`: 0 elastic/plastic, 1 rigid/plastic)
+    /// and reset what it may spend.
+    fn earn(&mut self, which: usize) {
+        if let Some(b) = self.budget {
+            self.credit[which] = (self.credit[which] + b.per_call).min(b.cap);
+            self.allowance = b.limit;
+        }
+    }
+
+    /// Clear the cache when it is full (before a new cell is built).
+    fn make_room(&mut self) {
+        if self.cells.len() >= MAX_CELLS || self.nodes.len() >= MAX_NODES {
+            self.clear();
+        }
+    }
+
+    /// Whether the new elastic/plastic cell of level q with lower corner c
+    /// may be built: always without a budget; with one, when the credit and
+    /// the call's allowance cover its new nodes and its check (then spent).
+    /// Otherwise the new nodes they cover are computed now (in key order),
+    /// so that a cell is built over several calls.
+    fn afford(&mut self, q: u32, c: [i32; 3]) -> Result<bool, RheologyError> {
+        if self.budget.is_none() {
+            return Ok(true);
+        }
+        self.make_room();
+        let mut missing = Vec::with_capacity(64);
+        for a in 0..4 {
+            for b in 0..4 {
+                for d in 0..4 {
+                    let i = c[0] - 1 + d;
+                    if i != 0 {
+                        let (key, _) = node_key(q, i.abs(), c[1] - 1 + b, c[2] - 1 + a);
+                        if !self.nodes.contains_key(&key) {
+                            missing.push(key);
+                        }
+                    }
+                }
+            }
+        }
+        missing.sort_unstable();
+        missing.dedup();
+        if self.spend(0, missing.len() as f64 + 1.0) {
+            return Ok(true);
+        }
+        for key in missing {
+            if !self.spend(0, 1.0) {
+                break;
+            }
+            self.node(key[0] as u32, key[1], key[2], key[3])?;
+        }
+        Ok(false)
+    }
+
+    /// Spend `cost` from credit `which` if it and the call's allowance
+    /// cover it.
+    fn spend(&mut self, which: usize, cost: f64) -> bool {
+        let ok = cost <= self.credit[which].min(self.allowance);
+        if ok {
+            self.credit[which] -= cost;
+            self.allowance -= cost;
+        }
+        ok
+    }
+
     /// Node (i, j, l) of level q, any integer indices (ghosts through the
     /// symmetries); shared with the coarser levels where they coincide.
     fn node(&mut self, q: u32, i: i32, j: i32, l: i32) -> Result<[f64; 3], RheologyError> {
@@ -322,19 +538,12 @@ impl Map {
             let v = self.node(q, -i, j, l)?;
             return Ok([-v[0], -v[1], -v[2]]);
         }
-        let (jj, ll, s) = angles(q, j, l);
-        // The coarsest level holding the point.
-        let (mut qq, mut ii, mut jj, mut ll) = (q, i, jj, ll);
-        while qq > 0 && (ii | jj | ll) & 1 == 0 {
-            qq -= 1;
-            ii /= 2;
-            jj /= 2;
-            ll /= 2;
-        }
-        let key = [qq as i32, ii, jj, ll];
+        let (key, s) = node_key(q, i, j, l);
+        let [qq, ii, jj, ll] = key;
         let v = match self.nodes.get(&key) {
             Some(v) => *v,
             None => {
+                let qq = qq as u32;
                 let x = Self::point(qq, f64::from(ii), f64::from(jj), f64::from(ll));
                 let v = self.exact(x, 0.1 * self.tol)?;
                 self.stats.nodes_computed += 1;
@@ -359,13 +568,15 @@ impl Map {
         accepted
     }
 
-    /// The cell of level q with lower corner (i, j, l): its stencil if accepted.
-    fn cell(&mut self, q: u32, c: [i32; 3]) -> Result<Option<&Stencil>, RheologyError> {
+    /// The cell of level q with lower corner (i, j, l), built (checked) on
+    /// first use when the budget, if any, covers it.
+    fn cell(&mut self, q: u32, c: [i32; 3]) -> Result<Lookup<'_, Stencil>, RheologyError> {
         let key = [q as i32, c[0], c[1], c[2]];
         if !self.cells.contains_key(&key) {
-            if self.cells.len() >= MAX_CELLS || self.nodes.len() >= MAX_NODES {
-                self.clear();
+            if !self.afford(q, c)? {
+                return Ok(Lookup::OverBudget);
             }
+            self.make_room();
             let mut vals: Stencil = Box::new([[0.0; 3]; 64]);
             for a in 0..4 {
                 for b in 0..4 {
@@ -391,7 +602,10 @@ impl Map {
             let accepted = self.check(e, ex);
             self.cells.insert(key, accepted.then_some(vals));
         }
-        Ok(self.cells.get(&key).and_then(|v| v.as_ref()))
+        Ok(match self.cells.get(&key) {
+            Some(Some(vals)) => Lookup::Accepted(vals),
+            _ => Lookup::Rejected,
+        })
     }
 
     /// The rigid/plastic model (`Model::RigidPlastic` of [`crate::evaluate`]) at the inputs
@@ -413,37 +627,77 @@ impl Map {
         let r = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
         let v = (x[2] / r).clamp(-1.0, 1.0).acos() * (f64::from(N_THETA) / PI);
         let w = x[1].atan2(x[0]) * (2.0 * f64::from(N_PHI) / PI);
+        self.earn(1);
         for q in 0..=MAX_LEVEL {
             let f = f64::from(1u32 << q);
             let (vq, wq) = (v * f, w * f);
             let j = (vq.floor() as i32).clamp(0, (N_THETA << q) - 1);
             let l = (wq.floor() as i32).clamp(0, (N_PHI << q) - 1);
-            let (wj, wl) = (weights(vq - f64::from(j)), weights(wq - f64::from(l)));
-            if let Some(e) = self
-                .rigid_cell(q, [j, l])?
-                .map(|vals| interpolate2(vals, &wj, &wl))
-            {
-                self.stats.rigid_interpolated += 1;
-                return Ok(unfold(e, s, [j1, j2, j3]));
+            match self.rigid_cell(q, [j, l])? {
+                Lookup::Accepted(vals) => {
+                    let (wj, wl) = (weights(vq - f64::from(j)), weights(wq - f64::from(l)));
+                    let e = interpolate2(vals, &wj, &wl);
+                    self.stats.rigid_interpolated += 1;
+                    return Ok(unfold(e, s, [j1, j2, j3]));
+                }
+                Lookup::Rejected => {}
+                Lookup::OverBudget => {
+                    self.stats.rigid_direct += 1;
+                    self.stats.rigid_over_budget += 1;
+                    return crate::rigid_plastic(&inp, Accuracy { tol: self.tol });
+                }
             }
         }
         self.stats.rigid_direct += 1;
         crate::rigid_plastic(&inp, Accuracy { tol: self.tol })
     }
 
+    /// Clear the rigid/plastic cache when it is full.
+    fn rigid_make_room(&mut self) {
+        if self.rigid_cells.len() >= MAX_CELLS || self.rigid_nodes.len() >= MAX_NODES {
+            self.rigid_nodes.clear();
+            self.rigid_cells.clear();
+        }
+    }
+
+    /// [`Map::afford`] for the rigid/plastic cell of level q with lower
+    /// corner c (16 nodes and the check at most).
+    fn rigid_afford(&mut self, q: u32, c: [i32; 2]) -> Result<bool, RheologyError> {
+        if self.budget.is_none() {
+            return Ok(true);
+        }
+        self.rigid_make_room();
+        let mut missing = Vec::with_capacity(16);
+        for a in 0..4 {
+            for b in 0..4 {
+                let (key, _) = rigid_node_key(q, c[0] - 1 + b, c[1] - 1 + a);
+                if !self.rigid_nodes.contains_key(&key) {
+                    missing.push(key);
+                }
+            }
+        }
+        missing.sort_unstable();
+        missing.dedup();
+        if self.spend(1, missing.len() as f64 + 1.0) {
+            return Ok(true);
+        }
+        for key in missing {
+            if !self.spend(1, 1.0) {
+                break;
+            }
+            self.rigid_node(key[0] as u32, key[1], key[2])?;
+        }
+        Ok(false)
+    }
+
     /// Rigid/plastic node (j, l) of level q (any integers, folded).
     fn rigid_node(&mut self, q: u32, j: i32, l: i32) -> Result<[f64; 3], RheologyError> {
-        let (jj, ll, s) = angles(q, j, l);
-        let (mut qq, mut jj, mut ll) = (q, jj, ll);
-        while qq > 0 && (jj | ll) & 1 == 0 {
-            qq -= 1;
-            jj /= 2;
-            ll /= 2;
-        }
-        let key = [qq as i32, jj, ll];
+        let (key, s) = rigid_node_key(q, j, l);
+        let [qq, jj, ll] = key;
         let v = match self.rigid_nodes.get(&key) {
             Some(v) => *v,
             None => {
+                let qq = qq as u32;
                 let v = self.rigid_exact(Self::point(qq, 1.0, f64::from(jj), f64::from(ll)))?;
                 self.stats.nodes_computed += 1;
                 self.rigid_nodes.insert(key, v);
@@ -467,13 +721,13 @@ impl Map {
 
     /// The rigid/plastic cell of level q with lower corner (j, l), checked
     /// at its centre like the elastic/plastic cells.
-    fn rigid_cell(&mut self, q: u32, c: [i32; 2]) -> Result<Option<&Stencil2>, RheologyError> {
+    fn rigid_cell(&mut self, q: u32, c: [i32; 2]) -> Result<Lookup<'_, Stencil2>, RheologyError> {
         let key = [q as i32, c[0], c[1]];
         if !self.rigid_cells.contains_key(&key) {
-            if self.rigid_cells.len() >= MAX_CELLS || self.rigid_nodes.len() >= MAX_NODES {
-                self.rigid_nodes.clear();
-                self.rigid_cells.clear();
+            if !self.rigid_afford(q, c)? {
+                return Ok(Lookup::OverBudget);
             }
+            self.rigid_make_room();
             let mut vals: Stencil2 = Box::new([[0.0; 3]; 16]);
             for a in 0..4 {
                 for b in 0..4 {
@@ -488,8 +742,38 @@ impl Map {
             let accepted = self.check(e, ex);
             self.rigid_cells.insert(key, accepted.then_some(vals));
         }
-        Ok(self.rigid_cells.get(&key).and_then(|v| v.as_ref()))
+        Ok(match self.rigid_cells.get(&key) {
+            Some(Some(vals)) => Lookup::Accepted(vals),
+            _ => Lookup::Rejected,
+        })
     }
+}
+
+/// The cache key of elastic/plastic node (i > 0, j, l) of level q — the
+/// coarsest level holding the point, angles folded — and the signs to apply
+/// to its (J4, J5, J6).
+fn node_key(q: u32, i: i32, j: i32, l: i32) -> ([i32; 4], [f64; 3]) {
+    let (jj, ll, s) = angles(q, j, l);
+    let (mut qq, mut ii, mut jj, mut ll) = (q, i, jj, ll);
+    while qq > 0 && (ii | jj | ll) & 1 == 0 {
+        qq -= 1;
+        ii /= 2;
+        jj /= 2;
+        ll /= 2;
+    }
+    ([qq as i32, ii, jj, ll], s)
+}
+
+/// The cache key of rigid/plastic node (j, l) of level q and its signs.
+fn rigid_node_key(q: u32, j: i32, l: i32) -> ([i32; 3], [f64; 3]) {
+    let (jj, ll, s) = angles(q, j, l);
+    let (mut qq, mut jj, mut ll) = (q, jj, ll);
+    while qq > 0 && (jj | ll) & 1 == 0 {
+        qq -= 1;
+        jj /= 2;
+        ll /= 2;
+    }
+    ([qq as i32, jj, ll], s)
 }
 
 /// Canonical angular indices of level q for any (j, l): inside the base

@@ -36,9 +36,12 @@
 //! outside the cap, or a cap step that ends with λ < 0, is cut at the event
 //! located on the step's cubic Hermite interpolant (cap entry: Newton's
 //! method with the interpolant's exact derivative from the step's end;
-//! unloading: Illinois iteration) and repeated up to it; the state is then put onto (cap entry) or taken off
-//! (unloading) the cap, so an event is located to the interpolant's O(h⁴)
-//! instead of the first-order return of a fixed-step scheme.
+//! unloading: Illinois iteration). At a cap entry the state and the strip
+//! sums are the interpolant's there (the sums' interpolant has the
+//! integrands as slopes); an unloading repeats the step up to the event.
+//! The state is then put onto (cap entry) or taken off (unloading) the cap,
+//! so an event is located to the interpolant's O(h⁴) instead of the
+//! first-order return of a fixed-step scheme.
 //!
 //! **Across the contact** (Y = sin φ): adaptive Lobatto–Kronrod panels in
 //! φ (4-point Gauss–Lobatto rule and its 7-point Kronrod extension, which
@@ -57,7 +60,7 @@
 //! everywhere).
 //!
 //! Measured accuracy and cost: crate README, section "Viscoelastic model";
-//! what was tried instead: docs/decisions/0045 to 0048 and 0077. The former
+//! what was tried instead: docs/decisions/0045 to 0048, 0076 and 0077. The former
 //! fixed-grid scheme is kept in [`reference`] as the tests' independent
 //! reference.
 
@@ -193,9 +196,17 @@ struct Pt {
 }
 
 impl Pt {
-    fn new(s: f64) -> Self {
-        let (sn, cs) = s.sin_cos();
-        Pt { s, sn, cs }
+    /// The points σ + d1 and σ + d2 (|d2| ≤ |d1| ≤ 1), by
+    /// [`sincos_small2`].
+    #[inline]
+    fn advance2(&self, d1: f64, d2: f64) -> (Self, Self) {
+        let ((s1, c1), (s2, c2)) = sincos_small2(d1, d2);
+        let rot = |sd: f64, cd: f64, d: f64| Pt {
+            s: self.s + d,
+            sn: self.sn * cd + self.cs * sd,
+            cs: self.cs * cd - self.sn * sd,
+        };
+        (rot(s1, c1, d1), rot(s2, c2, d2))
     }
 
     /// The point σ + d (|d| ≤ 1): sine and cosine of d by their Taylor
@@ -211,6 +222,36 @@ impl Pt {
     }
 }
 
+/// One of the [`horner`] polynomial pairs.
+type Horner = fn(&[f64; 8], &[f64; 8], f64) -> (f64, f64);
+
+/// [`sincos_small`] of d1 and d2 (|d2| ≤ |d1| ≤ 1) with the number of
+/// terms of d1 for both: one branch on the tier instead of two.
+#[inline]
+fn sincos_small2(d1: f64, d2: f64) -> ((f64, f64), (f64, f64)) {
+    let ad = d1.abs();
+    if ad > 1.0 {
+        return (d1.sin_cos(), d2.sin_cos());
+    }
+    let (x1, x2) = (d1 * d1, d2 * d2);
+    let both = |n: Horner| {
+        let (s1, c1) = n(&SIN_T, &COS_T, x1);
+        let (s2, c2) = n(&SIN_T, &COS_T, x2);
+        ((d1 * s1, c1), (d2 * s2, c2))
+    };
+    if ad < 0.037 {
+        both(horner::<3>)
+    } else if ad < 0.114 {
+        both(horner::<4>)
+    } else if ad < 0.245 {
+        both(horner::<5>)
+    } else if ad < 0.436 {
+        both(horner::<6>)
+    } else {
+        both(horner::<7>)
+    }
+}
+
 /// (sin d, cos d) by their Taylor series for |d| ≤ 1 (relative error
 /// < 1e-16 up to |d| = 0.43, < 5e-14 at |d| = 1), by libm beyond. The
 /// number of terms follows |d| (the cap's direction moves little within a
@@ -218,28 +259,8 @@ impl Pt {
 /// each tier, sin d to d^(2n+1).
 #[inline]
 fn sincos_small(d: f64) -> (f64, f64) {
-    // Taylor coefficients of sin d/d and cos d in d²: (−1)^i/(2i+1)!,
-    // (−1)^i/(2i)!.
-    const S: [f64; 8] = [
-        1.0,
-        -1.0 / 6.0,
-        1.0 / 120.0,
-        -1.0 / 5040.0,
-        1.0 / 362_880.0,
-        -1.0 / 39_916_800.0,
-        1.0 / 6_227_020_800.0,
-        -1.0 / 1_307_674_368_000.0,
-    ];
-    const C: [f64; 8] = [
-        1.0,
-        -1.0 / 2.0,
-        1.0 / 24.0,
-        -1.0 / 720.0,
-        1.0 / 40_320.0,
-        -1.0 / 3_628_800.0,
-        1.0 / 479_001_600.0,
-        -1.0 / 87_178_291_200.0,
-    ];
+    const S: [f64; 8] = SIN_T;
+    const C: [f64; 8] = COS_T;
     let ad = d.abs();
     if ad > 1.0 {
         return d.sin_cos();
@@ -261,6 +282,29 @@ fn sincos_small(d: f64) -> (f64, f64) {
     (d * sv, cv)
 }
 
+/// Taylor coefficients of sin d/d and cos d in d²: (−1)^i/(2i+1)!,
+/// (−1)^i/(2i)!.
+const SIN_T: [f64; 8] = [
+    1.0,
+    -1.0 / 6.0,
+    1.0 / 120.0,
+    -1.0 / 5040.0,
+    1.0 / 362_880.0,
+    -1.0 / 39_916_800.0,
+    1.0 / 6_227_020_800.0,
+    -1.0 / 1_307_674_368_000.0,
+];
+const COS_T: [f64; 8] = [
+    1.0,
+    -1.0 / 2.0,
+    1.0 / 24.0,
+    -1.0 / 720.0,
+    1.0 / 40_320.0,
+    -1.0 / 3_628_800.0,
+    1.0 / 479_001_600.0,
+    -1.0 / 87_178_291_200.0,
+];
+
 /// The polynomials Σ_{i ≤ N} s_i·x^i and Σ_{i ≤ N} c_i·x^i (Horner).
 #[inline(always)]
 fn horner<const N: usize>(s: &[f64; 8], c: &[f64; 8], x: f64) -> (f64, f64) {
@@ -281,12 +325,25 @@ trait Seg<const N: usize> {
     fn inverse(&self, gi: f64, j: &[[f64; N]; N]) -> [[f64; N]; N];
     /// Weight of a state error in stress units, for a step from `p`.
     fn weight(&self, p: Pt) -> f64;
+    /// The product ∂fq/∂u · s.
+    #[inline(always)]
+    fn gq_dot(&self, gq: &[[f64; N]; 3], s: &[f64; N]) -> [f64; 3] {
+        let mut o = [0.0; 3];
+        for (i, row) in gq.iter().enumerate() {
+            for k in 0..N {
+                o[i] += row[k] * s[k];
+            }
+        }
+        o
+    }
 }
 
 /// Interior of the cap: state Z.
 struct Interior<'a>(&'a VStrip);
 /// On the cap: state θ, Z = L·(cos θ, sin θ); n(θ) is evaluated by
-/// rotating n(θ0) of the step's start by θ − θ0.
+/// rotating n(θ0) of the step's start by θ − θ0. Only such differences
+/// enter, so θ is counted from the direction at the cap entry (θ = 0 there,
+/// n0 = Z/|Z|).
 struct Cap<'a> {
     st: &'a VStrip,
     th0: f64,
@@ -356,6 +413,12 @@ impl Seg<2> for Interior<'_> {
 
     fn weight(&self, _p: Pt) -> f64 {
         1.0
+    }
+
+    /// ∂fq/∂Z = [[X′, 0], [0, X′], [0, X′·X]]: its zeros skipped.
+    #[inline(always)]
+    fn gq_dot(&self, gq: &[[f64; 2]; 3], s: &[f64; 2]) -> [f64; 3] {
+        [gq[0][0] * s[0], gq[1][1] * s[1], gq[2][1] * s[1]]
     }
 }
 
@@ -622,7 +685,7 @@ fn ros_step<const N: usize, S: Seg<N>>(
         y[k] += A21 * u1[k];
         cu[k] = C21 * u1[k];
     }
-    let p1 = p.advance(ALPHA2 * h);
+    let (p1, p3) = p.advance2(ALPHA2 * h, ALPHA3 * h);
     let e2 = seg.eval(p1, &y);
     let u2 = stage(&e2, G2, cu);
     let mut y = *u;
@@ -630,7 +693,7 @@ fn ros_step<const N: usize, S: Seg<N>>(
         y[k] += A31 * u1[k] + A32 * u2[k];
         cu[k] = C31 * u1[k] + C32 * u2[k];
     }
-    let e3 = seg.eval(p.advance(ALPHA3 * h), &y);
+    let e3 = seg.eval(p3, &y);
     let u3 = stage(&e3, G3, cu);
     for k in 0..N {
         cu[k] = C41 * u1[k] + C42 * u2[k] + C43 * u3[k];
@@ -653,14 +716,14 @@ fn ros_step<const N: usize, S: Seg<N>>(
     }
     // The strip sums (stages 3 and 4 evaluate f at the same point).
     let mut dq = [0.0; 3];
+    let gb = seg.gq_dot(&jac.gq, &sb);
+    let ge = seg.gq_dot(&jac.gq, &se);
     for i in 0..3 {
         let thq = h * jac.tq[i];
-        let mut vb = QB[0] * ev0.fq[i] + QB[1] * e2.fq[i] + (QB[2] + QB[3]) * e3.fq[i] + QBG * thq;
-        let mut ve = QE[0] * ev0.fq[i] + QE[1] * e2.fq[i] + (QE[2] + QE[3]) * e3.fq[i] + QEG * thq;
-        for k in 0..N {
-            vb += jac.gq[i][k] * sb[k];
-            ve += jac.gq[i][k] * se[k];
-        }
+        let vb =
+            QB[0] * ev0.fq[i] + QB[1] * e2.fq[i] + (QB[2] + QB[3]) * e3.fq[i] + QBG * thq + gb[i];
+        let ve =
+            QE[0] * ev0.fq[i] + QE[1] * e2.fq[i] + (QE[2] + QE[3]) * e3.fq[i] + QEG * thq + ge[i];
         dq[i] = h * vb;
         err = err.max((h * ve).abs());
         sum += dq[i];
@@ -693,20 +756,25 @@ fn hermite_dt(y0: f64, m0: f64, y1: f64, m1: f64, h: f64, t: f64) -> f64 {
 
 /// The root of g on (0, 1) with g(0) = `g0` < 0 < g(1) = `g1` (a cap entry
 /// inside a step) by Newton's method with the exact derivative (`gd(t)` =
-/// (g, dg/dt)) from t = 1: |H|² − L² is mostly convex there, so the iterates
-/// approach the root from outside the cap; a step that leaves the bracket
-/// is replaced by regula falsi (bisection if that fails too). To
-/// |Δt| < 1e-10. On the bench cases at tol = 1e-3: 5–9 evaluations per
-/// entry on average, against 9.5–12 of [`event`] and 4–13 of Newton from the
-/// secant point (13 in the anisotropic case g, whose g has a minimum inside
-/// the step; docs/decisions/0048).
+/// (g, dg/dt)) from t = 1 (g = |H| − L at a cap entry; with |H|² − L² the
+/// iterates approached the root from outside the cap except near the
+/// outlet, see [`strip_sums`]); a step that leaves the bracket
+/// is replaced by regula falsi (bisection if that fails too). Ends with the
+/// first Newton update below 1e-6, applied (the convergence is quadratic:
+/// the bench cases' values are the same to 10 digits as with 1e-10, one
+/// evaluation fewer per entry), or a bracket narrower than 1e-10. On the
+/// bench cases at tol = 1e-3 (with |H|² − L² and 1e-10): 5–9 evaluations
+/// per entry on average, against 9.5–12 of [`event`] and 4–13 of Newton
+/// from the secant point (13 in the anisotropic case g, whose g has a
+/// minimum inside the step; docs/decisions/0048); with |H| − L 4 on case l,
+/// where |H|² − L² took 12 (docs/decisions/0076).
 fn event_newton(gd: impl Fn(f64) -> (f64, f64), g0: f64, g1: f64) -> f64 {
     let (mut a, mut fa, mut b, mut fb) = (0.0, g0, 1.0, g1);
     let mut t = 1.0;
     for _ in 0..60 {
         let (v, dv) = gd(t);
         let mut tn = t - v / dv;
-        if v == 0.0 || (tn - t).abs() < 1e-10 {
+        if v == 0.0 || (tn - t).abs() < 1e-6 {
             return tn.clamp(a, b);
         }
         if v < 0.0 {
@@ -816,8 +884,10 @@ fn factor(err: f64, atol: f64) -> f64 {
 }
 
 /// Longest step in σ (the Taylor sine and cosine of [`Pt::advance`] hold
-/// for |d| ≤ 1).
-const H_MAX: f64 = 0.8;
+/// for |d| ≤ 1). Reached on the stiff, quasi-static strips of small D
+/// (case l: −4 % instructions at tol 1e-3 against the former 0.8; 1.2 and
+/// 1.6 no better; docs/decisions/0076).
+const H_MAX: f64 = 1.0;
 
 /// The point at σ + h, exactly (0, −1) at the outlet.
 #[inline]
@@ -833,6 +903,55 @@ fn end_point(p1: Pt, last: bool) -> Pt {
     }
 }
 
+/// A cap entry in a strip's last step whose remaining strip moves the
+/// sums by less than OUTLET_EPS·atol ([`outlet_bound`]) is not followed.
+const OUTLET_EPS: f64 = 0.02;
+
+/// A bound on the strip sums' change if a cap entry at σ_e = σ + `he` in
+/// the strip's last step from `p` is not followed: beyond it the interior
+/// stress, |Z| ≤ 2·max(L_e, |Z_1|) on the step's interpolant (|Z_1| = `r1`
+/// at the outlet), against |Z| = L ≤ L_e on the cap, over the rest of the
+/// strip ΔX = c·(1 + cos σ_e) (and X·ΔX for ∫Zy·X dX): (2·max(L_e, |Z_1|) +
+/// L_e)·ΔX·(1 + c). Out of line (at most once per strip).
+#[inline(never)]
+fn outlet_bound(st: &VStrip, p: Pt, he: f64, r1: f64) -> f64 {
+    let pe = p.advance(he);
+    let le = 1.5 * st.c * pe.sn.max(0.0);
+    (2.0 * le.max(r1) + le) * st.c * (1.0 + pe.cs) * (1.0 + st.c)
+}
+
+/// The first step's bound at a stiff inlet, see [`strip_sums`]: 20 leaves
+/// the first step's estimate ≈ atol on case l (10: −3.1 %, 20: −3.7 %,
+/// 30: −4.6 %, 50: none of the instructions at tol 1e-3, the first step
+/// then rejected again; 20 keeps a margin).
+const INLET_K: f64 = 20.0;
+
+/// The first step of a strip (kept out of line: once per strip).
+#[inline(never)]
+fn first_step(st: &VStrip, atol: f64) -> f64 {
+    // At the inlet Z ≈ e·c·σ²/2 against L ≈ (3/2)·c·σ: the first step keeps
+    // |Z|/L ≤ 1/2. 0.8·tol^(1/4) (0.14 at 1e-3): the former 0.2·tol^(1/4)
+    // had step errors ≈ 0 and took ≈ 2 steps more to reach the strip's
+    // step size (6 % of the steps at moderate spin; docs/decisions/0046).
+    let ein = (st.a * st.a + (st.b1 - st.q2 * st.c).powi(2)).sqrt();
+    let mut h = 0.8 * atol.sqrt().sqrt();
+    if ein > 0.0 {
+        h = h.min(1.5 / ein);
+    }
+    // Stiff relaxation at the inlet (small D): there dZ/dσ ≈ c·σ·(e − Z/D′)
+    // with D′ = D/max(1, gy) (ψ′(0) = 1/D), a layer of width √(D′/c) in σ
+    // whose first step's error estimate grows like e·D′·(h·√(c/D′))⁵/19
+    // (measured on case l, D = 0.01): the first step is kept to
+    // √(D′/c)·(INLET_K·atol/(|e|·D′))^(1/5), where that estimate is ≈ atol
+    // (the powf only where this bounds the step).
+    let dr = st.law.d / st.gy.max(1.0);
+    let h2 = h * h;
+    if dr * dr.sqrt() * INLET_K * atol < h2 * h2 * h * st.c * st.c * st.c.sqrt() * ein {
+        h = (dr / st.c).sqrt() * (INLET_K * atol / (ein * dr)).powf(0.2);
+    }
+    h
+}
+
 /// Strip integrals [∫Zx dX, ∫Zy dX, ∫Zy·X dX], step error estimates
 /// ≤ [`STEP_ACCEPT`]·atol (step sizes aimed at 0.66·atol).
 #[allow(clippy::needless_range_loop)]
@@ -845,15 +964,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
     // The largest viscous rate on this strip, ψ((3/2)·c), for
     // Cap::unload_sign (computed at the first cap step).
     let mut psi_c = f64::NAN;
-    // At the inlet Z ≈ e·c·σ²/2 against L ≈ (3/2)·c·σ: the first step keeps
-    // |Z|/L ≤ 1/2. 0.8·tol^(1/4) (0.14 at 1e-3): the former 0.2·tol^(1/4)
-    // had step errors ≈ 0 and took ≈ 2 steps more to reach the strip's
-    // step size (6 % of the steps at moderate spin; docs/decisions/0046).
-    let ein = st.a.hypot(st.b1 - st.q2 * st.c);
-    let mut h = 0.8 * atol.sqrt().sqrt();
-    if ein > 0.0 {
-        h = h.min(1.5 / ein);
-    }
+    let mut h = first_step(st, atol);
     let mut p = Pt {
         s: 0.0,
         sn: 0.0,
@@ -900,45 +1011,88 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                     };
                     let g0 = z[0] * z[0] + z[1] * z[1] - lcap(p.sn).powi(2);
                     let t = if g0 < 0.0 {
-                        // g and dg/dt = 2·(H·H′ − L·L′), L′ = (3/2)·c·cos σ·h.
+                        // |H| − L and its derivative H·H′/|H| − L′,
+                        // L′ = (3/2)·c·cos σ·h. (|H|² − L² is flat where L
+                        // vanishes linearly at the outlet: Newton's iterates
+                        // from t = 1 left the bracket there, 12 evaluations
+                        // per entry on case l against 4 with |H| − L.)
                         let gd = |t: f64| {
                             let zx = hermite(z[0], ev0.f[0], stp.u[0], ev1.f[0], h1, t);
                             let zy = hermite(z[1], ev0.f[1], stp.u[1], ev1.f[1], h1, t);
                             let dx = hermite_dt(z[0], ev0.f[0], stp.u[0], ev1.f[0], h1, t);
                             let dy = hermite_dt(z[1], ev0.f[1], stp.u[1], ev1.f[1], h1, t);
                             let pt = p.advance(t * h1);
-                            let l = lcap(pt.sn);
-                            let dl = 1.5 * st.c * pt.cs * h1;
-                            (
-                                zx * zx + zy * zy - l * l,
-                                2.0 * (zx * dx + zy * dy - l * dl),
-                            )
+                            let r = (zx * zx + zy * zy).sqrt();
+                            let dr = if r > 0.0 {
+                                (zx * dx + zy * dy) / r
+                            } else {
+                                0.0
+                            };
+                            (r - lcap(pt.sn), dr - 1.5 * st.c * pt.cs * h1)
                         };
-                        event_newton(gd, g0, r1 * r1 - l1 * l1)
+                        let r0 = (z[0] * z[0] + z[1] * z[1]).sqrt();
+                        event_newton(gd, r0 - lcap(p.sn), r1 - l1)
                     } else {
                         // At the inlet (Z = 0 = L) or on the cap's edge.
                         event(g, r1 * r1 - l1 * l1)
                     };
-                    let zs = if t >= 1.0 {
+                    // An entry this close to the outlet (the stiff,
+                    // quasi-static strips of small D) is not followed.
+                    if last
+                        && t < 1.0
+                        && stp.err <= STEP_ACCEPT * atol
+                        && outlet_bound(st, p, t * h1, r1) <= OUTLET_EPS * atol
+                    {
+                        add(&mut q, &stp.dq);
+                        break;
+                    }
+                    let zs = if stp.err > STEP_ACCEPT * atol {
+                        // A step forced through at MAX_STEPS (extreme
+                        // inputs, where the tolerance is not held): neither
+                        // it nor its interpolant is trusted, the stress
+                        // goes onto the cap at the step's start.
+                        z
+                    } else if t >= 1.0 {
                         add(&mut q, &stp.dq);
                         p = p1;
                         stp.u
                     } else if t > 0.0 {
+                        // The state and the sums at the entry from the
+                        // step's Hermite interpolants (the sums' slopes are
+                        // their integrands fq) instead of the step repeated
+                        // up to it: m −4 % time, worst error/tol on 2000
+                        // random cases 0.60 / 0.51 → 0.59 / 0.54 at tol
+                        // 1e-3 / 1e-4 (docs/decisions/0076).
                         let hs = t * h1;
-                        let e = ros_step(&inter, p, hs, &z, &ev0, &jac);
-                        add(&mut q, &e.dq);
-                        p = Pt::new(p.s + hs);
-                        e.u
+                        let mut dq = [0.0; 3];
+                        for i in 0..3 {
+                            dq[i] = hermite(0.0, ev0.fq[i], stp.dq[i], ev1.fq[i], h1, t);
+                        }
+                        add(&mut q, &dq);
+                        p = p.advance(hs);
+                        [
+                            hermite(z[0], ev0.f[0], stp.u[0], ev1.f[0], h1, t),
+                            hermite(z[1], ev0.f[1], stp.u[1], ev1.f[1], h1, t),
+                        ]
                     } else {
                         z
                     };
-                    let th = if zs[1] == 0.0 && zs[0] == 0.0 {
-                        st.b1.atan2(st.a)
+                    // The cap's angle is counted from the entry direction
+                    // n0 = Z/|Z| (only angle differences enter the cap's
+                    // equations): no atan2 and sin_cos per entry.
+                    let rs = (zs[0] * zs[0] + zs[1] * zs[1]).sqrt();
+                    let n0 = if rs > 0.0 {
+                        (zs[0] / rs, zs[1] / rs)
                     } else {
-                        zs[1].atan2(zs[0])
+                        // At the inlet (Z = 0): the direction of (a, b1).
+                        let eb = (st.a * st.a + st.b1 * st.b1).sqrt();
+                        if eb > 0.0 {
+                            (st.a / eb, st.b1 / eb)
+                        } else {
+                            (1.0, 0.0)
+                        }
                     };
-                    let (s0, c0) = th.sin_cos();
-                    mode = Mode::Cap(th, (c0, s0));
+                    mode = Mode::Cap(0.0, n0);
                     switches += 1;
                 } else {
                     add(&mut q, &stp.dq);
@@ -985,7 +1139,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                         let hs = t * h1;
                         let e = ros_step(&cap, p, hs, &u, &ev0, &jac);
                         add(&mut q, &e.dq);
-                        p = Pt::new(p.s + hs);
+                        p = e.p1;
                         e.u[0]
                     } else {
                         th

@@ -1,7 +1,7 @@
 //! The interpolation map (traction_rheology::map) against the integrator.
 #![allow(clippy::unwrap_used, missing_docs)]
 
-use traction_rheology::map::Map;
+use traction_rheology::map::{Budget, Map};
 use traction_rheology::{Accuracy, Inputs, Model, OutOfRange, RheologyError, evaluate};
 use traction_testkit::XorShift64;
 
@@ -223,4 +223,141 @@ fn rigid_plastic_map_meets_its_accuracy() {
         let s = map.stats();
         assert!(s.rigid_interpolated >= 140, "{s:?}");
     }
+}
+
+#[test]
+fn a_budget_bounds_the_node_evaluations() {
+    // Map::with_budget(Budget::DEFAULT): 0.5 node evaluations earned per
+    // call, at most 65 spent in one. Scattered points with spin (|J1|, |J2|
+    // ≤ 5, J3 in [5, 26], k = 5, each once): the node evaluations and cell
+    // checks stay within 0.5 per call — counted, the bound by construction
+    // that makes the map cost ≤ 1 + 0.5·7 direct evaluations per call —
+    // where the map without budget spends more than 8 per call on the same
+    // points; every result within tol of the reference (tol/100), whether
+    // interpolated or evaluated directly. The rigid/plastic map alike.
+    let (k, tol) = (5.0, 1e-3);
+    let acc = Accuracy::new(tol).unwrap();
+    let mut rng = XorShift64::new(0x0078_b0d9_e7aa_0001);
+    let pts: Vec<_> = (0..60)
+        .map(|_| {
+            (
+                10.0 * rng.unit() - 5.0,
+                10.0 * rng.unit() - 5.0,
+                5.0 + 21.0 * rng.unit(),
+            )
+        })
+        .collect();
+    let mut map = Map::new(k, 0.0, 1.0, acc)
+        .unwrap()
+        .with_budget(Budget::DEFAULT);
+    let mut free = Map::new(k, 0.0, 1.0, acc).unwrap();
+    for (n, j) in pts.iter().enumerate() {
+        let o = map.evaluate(&at(&map, j.0, j.1, j.2)).unwrap();
+        free.evaluate(&at(&free, j.0, j.1, j.2)).unwrap();
+        let s = map.stats();
+        assert!(
+            (s.nodes_computed + s.cells_checked) as f64 <= 0.5 * (n + 1) as f64,
+            "{s:?}"
+        );
+        if n % 3 == 0 {
+            let r = reference(k, *j, tol / 100.0);
+            for (x, y) in [o.j4, o.j5, o.j6].into_iter().zip(r) {
+                assert!((x - y).abs() <= tol, "J {j:?}: {x} vs {y}");
+            }
+        }
+    }
+    let s = map.stats();
+    assert!(s.over_budget > 40, "{s:?}");
+    let f = free.stats();
+    assert!(f.nodes_computed + f.cells_checked > 8 * 60, "{f:?}");
+    // Rigid/plastic: its own credit.
+    let mut map = Map::new(k, 0.0, 1.0, acc)
+        .unwrap()
+        .with_budget(Budget::DEFAULT);
+    for (n, j) in pts.iter().enumerate() {
+        let o = map.rigid_plastic(&at(&map, j.0, j.1, j.2)).unwrap();
+        let s = map.stats();
+        assert!(
+            (s.nodes_computed + s.cells_checked) as f64 <= 0.5 * (n + 1) as f64,
+            "{s:?}"
+        );
+        let inp = Inputs::new(k, j.0, j.1, j.2).unwrap();
+        let r = evaluate(
+            &inp,
+            Model::RigidPlastic,
+            Accuracy::new(tol / 100.0).unwrap(),
+        )
+        .unwrap();
+        for (x, y) in [(o.j4, r.j4), (o.j5, r.j5), (o.j6, r.j6)] {
+            assert!((x - y).abs() <= tol, "J {j:?}: {x} vs {y}");
+        }
+    }
+    assert!(map.stats().rigid_over_budget > 0);
+}
+
+#[test]
+fn a_budgeted_map_still_builds_a_visited_region() {
+    // A traction curve (J1 from 0 to 8 at J2 = 0.3, J3 = 4), passed eight
+    // times through a map with the default budget: the first calls are
+    // direct (no credit yet), the cells are built as credit accrues, the
+    // last pass is interpolated throughout; every value within tol of the
+    // reference. The same calls on a second map, and on a clone taken
+    // mid-way, give bit-identical results (the credit is part of the map);
+    // clear() keeps the credit.
+    let (k, tol) = (5.0, 1e-3);
+    let acc = Accuracy::new(tol).unwrap();
+    let mut map = Map::new(k, 0.0, 1.0, acc)
+        .unwrap()
+        .with_budget(Budget::DEFAULT);
+    assert_eq!(map.credit(), Some([0.0; 2]));
+    let curve: Vec<f64> = (0..200).map(|n| 0.04 * n as f64).collect();
+    let mut results = Vec::new();
+    let mut clone = None;
+    let mut before_last = map.stats();
+    for pass in 0..8 {
+        if pass == 2 {
+            clone = Some(map.clone());
+        }
+        before_last = map.stats();
+        for (n, &j1) in curve.iter().enumerate() {
+            let o = map.evaluate(&at(&map, j1, 0.3, 4.0)).unwrap();
+            if n % 20 == 0 {
+                let r = reference(k, (j1, 0.3, 4.0), 1e-5);
+                assert!((o.j4 - r[0]).abs() <= tol && (o.j6 - r[2]).abs() <= tol);
+            }
+            results.push(o);
+        }
+    }
+    let s = map.stats();
+    assert_eq!(s.interpolated - before_last.interpolated, 200, "{s:?}");
+    assert!(s.over_budget > 0, "{s:?}");
+    let mut again = Map::new(k, 0.0, 1.0, acc)
+        .unwrap()
+        .with_budget(Budget::DEFAULT);
+    let mut clone = clone.unwrap();
+    for (n, expect) in results.iter().enumerate() {
+        let j1 = curve[n % 200];
+        assert_eq!(again.evaluate(&at(&again, j1, 0.3, 4.0)).unwrap(), *expect);
+        if n >= 400 {
+            assert_eq!(clone.evaluate(&at(&clone, j1, 0.3, 4.0)).unwrap(), *expect);
+        }
+    }
+    assert_eq!(again.stats(), map.stats());
+    let credit = map.credit();
+    map.clear();
+    assert_eq!(map.credit(), credit);
+}
+
+#[test]
+fn budget_out_of_range_is_named() {
+    for (args, name) in [
+        ((-0.5, 0.0, 130.0, 4.0), "per_call"),
+        ((0.5, 0.0, 0.5, 4.0), "cap"),
+        ((0.5, 200.0, 130.0, 4.0), "initial"),
+        ((0.5, 0.0, 130.0, f64::NAN), "limit"),
+    ] {
+        let e = Budget::new(args.0, args.1, args.2, args.3).unwrap_err();
+        assert!(e.to_string().contains(name), "{e}");
+    }
+    assert_eq!(Budget::new(0.5, 0.0, 130.0, 65.0).unwrap(), Budget::DEFAULT);
 }

@@ -99,7 +99,9 @@ impl Mode {
 
 /// Everything an FMU state holds (fmi2GetFMUstate): the mode, time,
 /// parameters, inputs and outputs. The variator itself is rebuilt from the
-/// parameters, and its outputs depend only on the inputs.
+/// parameters, and its outputs depend only on the inputs (with
+/// `rheology_map`, to within `rheology_tolerance`: the contacts' maps and
+/// their credit are a cache, not part of the state).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Snapshot {
     mode: Mode,

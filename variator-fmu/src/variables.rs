@@ -573,7 +573,7 @@ const DISCRETE_PARAMS: [Variable; 5] = [
         vr: vr::MAP,
         causality: Causality::Parameter,
         kind: Kind::Boolean { start: false },
-        description: "evaluate the J+T model through each contact's lazily built interpolation map (checked against the direct solution; ~10 us per step once a region is visited at a fixed tilt, but 0.5-2 s whenever a new tilt is first entered: new contacts, new maps); false (default): integrate the strips at every evaluation (~10 ms per step with spin)",
+        description: "evaluate the J+T model through each contact's lazily built interpolation map (checked against the direct solution; ~10 us per step once a region is visited at a fixed tilt; new cells are built within a budget of 0.5 node evaluations earned per evaluation, states whose cells are not built yet are evaluated directly, so a step costs at most a few direct ones on any input sequence, also when a new tilt brings new contacts and maps; whether a value is interpolated or direct depends on the steps before); false (default): integrate the strips at every evaluation (~10 ms per step with spin)",
         tilt_only: false,
     },
     Variable {

@@ -6,12 +6,17 @@
 //!   [SEED [TOL]]`: the elastic/plastic solver against 128-panel references on
 //!   307 cases, its results' bits, and its smoothness along random lines;
 //! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
-//!   random points.
+//!   random points;
+//! - `map-budget [N [TOL]]`: the contact's map against direct evaluation on a
+//!   scattered and a dense sequence of operating states; `map-budget-run
+//!   direct|free|budget|dense-free|dense-budget [N [TOL]]`: one way only,
+//!   for callgrind.
 //!
 //! These are not user examples: they measure the implementation.
 #![forbid(unsafe_code)]
 
 mod ep_sets;
+mod map_budget;
 mod map_check;
 mod prof;
 mod prof_visco;
@@ -31,7 +36,16 @@ commands:
                                   patterns, or the largest second differences along 120
                                   random lines
   map-check K TOL N RLOG [DX GY]  rheology map against evaluate at TOL/100 on N random
-                                  points, |J| log-uniform in [0.1, 10^(RLOG-1)]";
+                                  points, |J| log-uniform in [0.1, 10^(RLOG-1)]
+  map-budget [N [TOL]]            the contact's map against direct evaluation: time and
+                                  counters on N scattered and N dense states (default
+                                  2000, TOL 1e-3)
+  map-budget-run direct|free|budget|dense-free|dense-budget [N [TOL]]
+                                  only the rheology-level scattered sequence, one way
+                                  (direct, map without budget, map with Budget::DEFAULT),
+                                  or N calls of a warm traction curve through a map
+                                  without or with budget, for callgrind (default N 200,
+                                  TOL 1e-3)";
 
 fn main() -> std::process::ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -40,6 +54,8 @@ fn main() -> std::process::ExitCode {
         Some("prof") => prof::run(&args[1..]),
         Some("prof-visco") => prof_visco::run(&args[1..]),
         Some("map-check") => map_check::run(&args[1..]),
+        Some("map-budget") => map_budget::run(&args[1..]),
+        Some("map-budget-run") => map_budget::run_one(&args[1..]),
         Some("help" | "-h" | "--help") => {
             println!("{USAGE}");
             Ok(())

@@ -190,7 +190,7 @@ impl TractionFmu {
     /// Invalidate the contact (parameters changed), keeping its rheology map
     /// for the next one: the map's values depend only on k and the
     /// tolerance, so a rebuilt contact with the same ones reuses its cells
-    /// (results are the same with or without it).
+    /// and its credit (results within the tolerance with or without it).
     fn drop_contact(&mut self) {
         if let Some(m) = self.contact.take().and_then(|c| c.take_map()) {
             self.spare_map = Some(m);

@@ -425,6 +425,59 @@ fn rheology_map_and_tolerance_parameters() {
 }
 
 #[test]
+fn rheology_map_builds_its_cells_within_its_budget() {
+    // rheology_map on: the contact's map builds its cells within its budget
+    // (docs/decisions/0078), so the first evaluation is direct — the same
+    // outputs as without the map, to 1e-12 — and after 1000 steps with ω1
+    // varying within 0.17 % the steps are interpolated: J4..J6 no longer
+    // equal the direct values bit for bit but stay within 2·tol = 2e-4 of
+    // them (both within tol of the converged solution). The same call
+    // sequence on a second instance gives bit-identical outputs.
+    let (b1, b2) = default_bodies(2.07e11, 0.3);
+    let direct_contact = traction_contact::TractionContact::new(
+        &b1,
+        &b2,
+        user_fluid(),
+        options(traction_contact::Model::ElasticPlastic),
+    )
+    .unwrap();
+    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
+        .chain(vr::J1..=vr::J7)
+        .collect();
+    let steps = |f: &mut TractionFmu| -> Vec<Vec<f64>> {
+        let mut outs = Vec::new();
+        for i in 0..1000u32 {
+            let w1 = 600.0 + 0.01 * f64::from(i % 100);
+            f.set_real(&[vr::OMEGA1], &[w1]).unwrap();
+            f.do_step(f64::from(i) * 1e-3, 1e-3, &mut NullLogger)
+                .unwrap();
+            let mut o = vec![0.0; all.len()];
+            f.get_real(&all, &mut o, &mut NullLogger).unwrap();
+            outs.push(o);
+        }
+        outs
+    };
+    let (mut f, first) = run(&[], &[], &[(vr::RHEOLOGY_MAP, true)]).unwrap();
+    assert_matches(&first, &direct(&direct_contact, &first));
+    let outs = steps(&mut f);
+    let mut interpolated = 0;
+    for o in &outs[900..] {
+        let d = direct(&direct_contact, o);
+        for (n, x) in [(3, d.j4), (4, d.j5), (5, d.j6)] {
+            let y = o[out_index(vr::J1 + n).unwrap()];
+            assert!((y - x).abs() <= 2e-4, "J{}: {y} vs {x}", n + 1);
+            interpolated += usize::from(y != x);
+        }
+    }
+    assert!(
+        interpolated >= 250,
+        "{interpolated} of 300 values differ from direct"
+    );
+    let (mut g, _) = run(&[], &[], &[(vr::RHEOLOGY_MAP, true)]).unwrap();
+    assert_eq!(steps(&mut g), outs);
+}
+
+#[test]
 fn spin_peak_equals_traction_contact() {
     // User fluid: forces scaled by mu_spin_user, J groups by mu_user.
     let (_, o) = run(&[(vr::MU_SPIN_USER, 0.06)], &[], &[(vr::SPIN_PEAK, true)]).unwrap();

@@ -30,7 +30,10 @@ fn strip_matches_the_maxwell_closed_form() {
     // The step error is controlled per step (order-3 estimate of the
     // order-4 solution); these strips cover slow (D = 1) and stiff
     // (D = 0.01) relaxation, early and late cap entry; asserted ≤ atol
-    // (measured ≤ 0.1·atol).
+    // (measured ≤ 0.39·atol, at atol 1e-6 for D = 1: the state and the sums
+    // at a cap entry are the step's cubic Hermite interpolants, O(h⁴) like
+    // the order-3 estimate that sets h; ≤ 0.1·atol with the step repeated
+    // up to the entry, docs/decisions/0076).
     let mut worst = 0.0_f64;
     for &(c, a, b1, d) in &[
         (0.8, 1.0, 0.3, 1.0),
@@ -234,6 +237,11 @@ fn large_deborah_is_the_elastic_plastic_model() {
 /// the independent references are the tests above): the worst error/tol and
 /// its case at each tolerance, printed and asserted ≤ 1.
 fn random_scan(seed: u64, n: usize) {
+    random_scan_against(seed, n, 1e-8);
+}
+
+/// [`random_scan`] against the solver at `tol_ref`.
+fn random_scan_against(seed: u64, n: usize, tol_ref: f64) {
     let mut state: u64 = seed;
     let mut uniform = || {
         // xorshift64*.
@@ -265,7 +273,7 @@ fn random_scan(seed: u64, n: usize) {
             .unwrap();
         let p = Scaled::of(&inp);
         let law = Law::new(z0, d);
-        let r = solve(&p, law, 1e-8);
+        let r = solve(&p, law, tol_ref);
         for (i, tol) in [1e-3, 1e-4].into_iter().enumerate() {
             let e = max_dev(solve(&p, law, tol), r) / tol;
             if e > worst[i].0 {
@@ -304,6 +312,15 @@ fn random_scan_more_seeds() {
     // worst error/tol (docs/decisions/0077).
     random_scan(0x1234_5678_9abc_def1, 600);
     random_scan(0xdead_beef_cafe_f00d, 1500);
+}
+
+#[test]
+#[ignore = "2000 random cases of a fourth seed against tol = 1e-7, about 2 min: \
+            cargo test -p traction-rheology --release --lib random_scan -- --ignored --nocapture"]
+fn random_scan_fourth_seed() {
+    // A seed none of the step or panel rules was tuned on
+    // (docs/decisions/0076).
+    random_scan_against(0x5851_f42d_4c95_7f2d, 2000, 1e-7);
 }
 
 #[test]
