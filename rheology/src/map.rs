@@ -502,16 +502,32 @@ impl Map {
                 }
             }
         }
+        self.afford_nodes(0, missing, |m, key| {
+            m.node(key[0] as u32, key[1], key[2], key[3]).map(|_| ())
+        })
+    }
+
+    /// The budget's decision on a new cell whose `missing` node keys are
+    /// not computed yet (credit `which`): the whole cell (its nodes and its
+    /// check) when the credit covers it, spent then; otherwise as many of
+    /// the nodes, in key order, as the credit covers, computed now by
+    /// `compute`, so that the cell is built over several calls.
+    fn afford_nodes<K: Ord>(
+        &mut self,
+        which: usize,
+        mut missing: Vec<K>,
+        mut compute: impl FnMut(&mut Self, K) -> Result<(), RheologyError>,
+    ) -> Result<bool, RheologyError> {
         missing.sort_unstable();
         missing.dedup();
-        if self.spend(0, missing.len() as f64 + 1.0) {
+        if self.spend(which, missing.len() as f64 + 1.0) {
             return Ok(true);
         }
         for key in missing {
-            if !self.spend(0, 1.0) {
+            if !self.spend(which, 1.0) {
                 break;
             }
-            self.node(key[0] as u32, key[1], key[2], key[3])?;
+            compute(self, key)?;
         }
         Ok(false)
     }
@@ -676,18 +692,9 @@ impl Map {
                 }
             }
         }
-        missing.sort_unstable();
-        missing.dedup();
-        if self.spend(1, missing.len() as f64 + 1.0) {
-            return Ok(true);
-        }
-        for key in missing {
-            if !self.spend(1, 1.0) {
-                break;
-            }
-            self.rigid_node(key[0] as u32, key[1], key[2])?;
-        }
-        Ok(false)
+        self.afford_nodes(1, missing, |m, key| {
+            m.rigid_node(key[0] as u32, key[1], key[2]).map(|_| ())
+        })
     }
 
     /// Rigid/plastic node (j, l) of level q (any integers, folded).

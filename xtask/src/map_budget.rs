@@ -78,26 +78,21 @@ pub fn run(a: &[String]) -> Result<(), String> {
     let reference = contact(false, tol / 100.0);
     for (name, states, every) in [("scattered", &scattered, 1), ("dense", &dense, 10)] {
         let n = states.len();
-        let direct = contact(false, tol);
-        let t0 = Instant::now();
-        let d: Vec<[f64; 3]> = states
-            .iter()
-            .map(|s| {
-                let e = direct.evaluate(s).unwrap();
-                [e.j4, e.j5, e.j6]
-            })
-            .collect();
-        let t_direct = t0.elapsed().as_secs_f64();
+        // J4..J6 of every state and the time taken, in order.
+        let timed = |c: &TractionContact| {
+            let t0 = Instant::now();
+            let j: Vec<[f64; 3]> = states
+                .iter()
+                .map(|s| {
+                    let e = c.evaluate(s).unwrap();
+                    [e.j4, e.j5, e.j6]
+                })
+                .collect();
+            (j, t0.elapsed().as_secs_f64())
+        };
+        let (d, t_direct) = timed(&contact(false, tol));
         let mapped = contact(true, tol);
-        let t0 = Instant::now();
-        let m: Vec<[f64; 3]> = states
-            .iter()
-            .map(|s| {
-                let e = mapped.evaluate(s).unwrap();
-                [e.j4, e.j5, e.j6]
-            })
-            .collect();
-        let t_map = t0.elapsed().as_secs_f64();
+        let (m, t_map) = timed(&mapped);
         let (mut worst_map, mut worst_direct) = (0.0f64, 0.0f64);
         for i in (0..n).step_by(every) {
             let e = reference.evaluate(&states[i]).unwrap();
