@@ -239,13 +239,13 @@ fn sincos_small2(d1: f64, d2: f64) -> ((f64, f64), (f64, f64)) {
         let (s2, c2) = n(&SIN_T, &COS_T, x2);
         ((d1 * s1, c1), (d2 * s2, c2))
     };
-    if ad < 0.037 {
+    if ad < TIERS[0] {
         both(horner::<3>)
-    } else if ad < 0.114 {
+    } else if ad < TIERS[1] {
         both(horner::<4>)
-    } else if ad < 0.245 {
+    } else if ad < TIERS[2] {
         both(horner::<5>)
-    } else if ad < 0.436 {
+    } else if ad < TIERS[3] {
         both(horner::<6>)
     } else {
         both(horner::<7>)
@@ -265,22 +265,25 @@ fn sincos_small(d: f64) -> (f64, f64) {
     if ad > 1.0 {
         return d.sin_cos();
     }
-    // Highest power of d² kept: cos d's truncation d^(2n+2)/(2n+2)! < 1e-16
-    // for |d| < 0.037 (n = 3), 0.114 (4), 0.245 (5), 0.436 (6); n = 7 beyond.
     let d2 = d * d;
-    let (sv, cv) = if ad < 0.037 {
+    let (sv, cv) = if ad < TIERS[0] {
         horner::<3>(&S, &C, d2)
-    } else if ad < 0.114 {
+    } else if ad < TIERS[1] {
         horner::<4>(&S, &C, d2)
-    } else if ad < 0.245 {
+    } else if ad < TIERS[2] {
         horner::<5>(&S, &C, d2)
-    } else if ad < 0.436 {
+    } else if ad < TIERS[3] {
         horner::<6>(&S, &C, d2)
     } else {
         horner::<7>(&S, &C, d2)
     };
     (d * sv, cv)
 }
+
+/// The |d| below which [`sincos_small`] and [`sincos_small2`] keep d²
+/// up to the power n = 3, 4, 5, 6 (n = 7 beyond): cos d's truncation
+/// d^(2n+2)/(2n+2)! < 1e-16 there.
+const TIERS: [f64; 4] = [0.037, 0.114, 0.245, 0.436];
 
 /// Taylor coefficients of sin d/d and cos d in d²: (−1)^i/(2i+1)!,
 /// (−1)^i/(2i)!.
