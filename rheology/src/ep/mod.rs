@@ -18,8 +18,10 @@
 //!   (n, ∫Zx dX, ∫Zy dX, ∫Zy X dX) (a segment whose largest κ·h stays below
 //!   the stability margin may use a longer step, see `solve_adaptive`);
 //!   steps are sub-divided where the relaxation
-//!   rate (2/3)|v| makes RK4 unstable, and where it exceeds 8 sub-steps per
-//!   step n follows its quasi-steady solution θ = α − asin(α'/κ) (the
+//!   rate (2/3)|v| makes RK4 unstable (sub-steps whose lengths vary
+//!   continuously with κ·h, so that the outputs stay smooth in the inputs),
+//!   and where it exceeds 8 sub-steps per step n follows its quasi-steady
+//!   solution θ = α − asin(α'/κ) (blended in from 8 to 9 sub-steps; the
 //!   rigid/plastic direction with the first elastic lag; for gy ≠ 1 the root
 //!   of dθ/ds = α' of the anisotropic law, and only beyond 4·16·f sub-steps,
 //!   f = 1 + |gy − 1|/min(1, gy)), integrated by Simpson's rule; on such
