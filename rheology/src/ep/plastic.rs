@@ -81,13 +81,16 @@ const QS_BLEND: f64 = 1.125;
 /// The same count's base for an anisotropic stiffness (see `advance`).
 const MAX_SUB_ANISO: usize = 16;
 /// Largest turn of the slip direction α per step, as a multiple of the
-/// s-step: steps (and sub-steps) are shortened to |α'|·h ≤ 3·s_step near a
+/// s-step: steps (and sub-steps) are shortened to |α'|·h ≤ 4·s_step near a
 /// strip's crossing of the line vy = 0, where α turns by up to π within
 /// ΔX ≈ |a/q2| (high spin). Without it, strips crossing close to the pole
 /// were wrong by up to 0.2 at tol = 1e-2 (k = 0.151, J = (0.358, 0.648,
-/// −43.2)); 3 keeps the worst error/tol over 164 cases ≤ 0.7 (1, 2 and 5
-/// were checked: no systematic gain below 3, ≤ 0.7 at all of them).
-const TURN_PER_STEP: f64 = 3.0;
+/// −43.2)). 4 instead of 3 (docs/decisions/0083): at tol 1e-3 cases h, a,
+/// b, c −12/−6/−8/−15 % instructions (with KAPPA_H_STIFF), worst error/tol
+/// of `cargo xtask ep-sets` over 16 seeds and 5 fresh ones not worse; 5:
+/// −17/−12/−15/−20 %, but 0.61·tol at 1e-4 on the fresh seeds (0.47
+/// before), 6: 0.64·tol on the 16.
+const TURN_PER_STEP: f64 = 4.0;
 /// Largest number of sub-steps per step for the turn of the slip direction.
 const MAX_SUB_TURN: f64 = 256.0;
 /// Largest κ·h of a step that is limited by the exact turn of the slip
@@ -100,16 +103,31 @@ const MAX_SUB_TURN: f64 = 256.0;
 /// 0.147 → 0.184 at 1e-3), with 2 to 0.371 there; 0.5 is no more accurate
 /// (tests/convergence.rs 0.34 against 0.30) for the same instructions.
 const TURN_EXACT_KAPPA_H: f64 = 1.0;
+/// κ·h of the exact-turn step up to which it is taken whole, and from which
+/// the bound's step is taken instead; blended in between (see
+/// `Strip::plastic`). Switched hard at TURN_EXACT_KAPPA_H, the choice made
+/// jumps of 0.042·tol along a random line (`cargo xtask ep-sets lines 3`
+/// with TURN_PER_STEP = 4, docs/decisions/0083).
+const TURN_EXACT_BLEND: (f64, f64) = (0.8 * TURN_EXACT_KAPPA_H, TURN_EXACT_KAPPA_H);
 /// Largest number of steps of a plastic segment (a guard: the turn limit
-/// needs at most span/s_step·(1 + π/(3·s_step)) steps).
+/// needs at most span/s_step·(1 + π/(4·s_step)) steps).
 const MAX_STEPS: usize = 1 << 16;
-/// RK4 stability margin on κ·h (the real stability limit is 2.78; at 2 the
+/// RK4 stability margin on κ·h of non-stiff segments, and the unit of the
+/// quasi-steady threshold MAX_SUB·KAPPA_H (the real stability limit is 2.78; at 2 the
 /// RK4 amplification of the linearised relaxation is 1/3, positive, so the
 /// transient still decays monotonically). Raised from 1.2 without changing
 /// the verified accuracy of `evaluate` (rheology/tests/convergence.rs; its
 /// worst error/tol: crate README, section Convergence).
 const KAPPA_H: f64 = 2.0;
 
+/// RK4 margin on κ·h of the steps that `Strip::advance` takes whole on
+/// stiff segments (sub-steps beyond it). 1.5 rather than KAPPA_H: with the
+/// longer turn-limited steps of TURN_PER_STEP = 4 it keeps the worst
+/// error/tol of the wide-range sets where it was (docs/decisions/0083:
+/// 0.165 / 0.441 at tol 1e-3 / 1e-4 on 16 seeds, against 0.317 / 0.541 with
+/// KAPPA_H), for +8 % instructions on the random sets at 1e-3 and ≤ 0.2 %
+/// on the bench set at 1e-3 and 1e-4 (case a at 1e-2 +14 %).
+const KAPPA_H_STIFF: f64 = 1.5;
 /// Relative slack of the κ·h test of a whole segment (round-off of the bound).
 const KAPPA_H_SLACK: f64 = 1e-12;
 /// κ·h of the first step after yield on stiff segments (doubled per step).
@@ -386,10 +404,10 @@ impl Strip {
 
     /// Advance the plastic state by h (cos/sin of h/2 given): one RK4 step,
     /// or sub-steps whose lengths vary continuously with the step's bounds
-    /// (`Strip::sub_steps`) where κ·h exceeds the RK4 stability margin or
-    /// the slip direction turns by more than `a_h` within the step (beyond
-    /// MAX_SUB stability sub-steps: the quasi-steady direction, blended in
-    /// up to QS_BLEND·MAX_SUB).
+    /// (`Strip::sub_steps`) where κ·h exceeds the RK4 margin KAPPA_H_STIFF
+    /// or the slip direction turns by more than `a_h` within the step
+    /// (beyond κ·h = MAX_SUB·KAPPA_H: the quasi-steady direction, blended in
+    /// up to QS_BLEND times that).
     /// `rates`: the step's (κ·h, |α'|·h) bounds if the caller has them.
     /// Inlined: its call and the state passed through memory cost ≈ 40
     /// instructions per stiff step (bit-identical results; cases a, b, c
@@ -411,13 +429,14 @@ impl Strip {
             Some(r) => r,
             None => self.rates::<ISO>(p.sn, p.cs, s1, c1, h),
         };
-        if kh.is_nan() || (kh <= KAPPA_H && ah <= a_h) {
+        if kh.is_nan() || (kh <= KAPPA_H_STIFF && ah <= a_h) {
             return self.rk4::<ISO>(p, h, c2, s2);
         }
-        // Sub-steps needed for stability (κ·h ≤ KAPPA_H) and the turn, as a
-        // real number.
+        // Sub-steps needed for accuracy (κ·h ≤ KAPPA_H_STIFF) and the turn,
+        // as a real number; the quasi-steady branch from κ·h > MAX_SUB·
+        // KAPPA_H.
         let mk = kh / KAPPA_H;
-        let mr = mk.max((ah / a_h).min(MAX_SUB_TURN));
+        let mr = (kh / KAPPA_H_STIFF).max((ah / a_h).min(MAX_SUB_TURN));
         // With gy ≠ 1 the bound on κ·h (see `rates`) can exceed the actual
         // relaxation rate of θ by up to f = 1 + |gy − 1|/min(1, gy), and the
         // quasi-steady direction is then wrong where the flow is not yet
@@ -447,7 +466,8 @@ impl Strip {
     }
 
     /// `p` advanced by h in RK4 sub-steps where the step needs mr > 1 of
-    /// them (real: κ·h/KAPPA_H or the turn's count, see `advance`): with
+    /// them (real: κ·h/KAPPA_H_STIFF or the turn's count, see `advance`):
+    /// with
     /// n = ⌊mr⌋ and f = mr − n, a first sub-step of length
     /// r = lo + f·(h/(n + 1) − lo), lo = f·h/mr, then n equal ones of
     /// (h − r)/n ≤ h/mr (within the margin). The lengths are continuous in
@@ -587,7 +607,7 @@ impl Strip {
         } else {
             GRADED_KAPPA_H / ((2.0 / 3.0) * self.a.hypot(self.vy(self.c * sn))).max(RATE_FLOOR)
         };
-        // tan of the turn limit (`turn_step`; a_h ≤ 3·0.3 < π/2, the largest
+        // tan of the turn limit (`turn_step`; a_h ≤ 4·0.3 < π/2, the largest
         // s-step).
         let turn_t = if nonstiff || !exact_turn {
             f64::NAN
@@ -628,18 +648,26 @@ impl Strip {
                     let hb = hv * (a_h / ah).max(1.0 / MAX_SUB_TURN);
                     // The step to an exact turn of a_h is at least hb (the
                     // bound over-estimates the turn); taken where RK4
-                    // resolves it (κ·h ≤ TURN_EXACT_KAPPA_H, κ·h ∝ h).
+                    // resolves it (κ·h ≤ TURN_EXACT_BLEND.0, κ·h ∝ h), the
+                    // bound's step from κ·h ≥ TURN_EXACT_BLEND.1, and in
+                    // between a step from hb to hx with the turn sub-steps'
+                    // limit from a_h to ∞, both by a C¹ step in κ·h, so that
+                    // the choice adds no jump in the inputs.
                     let hx = if turn_t.is_nan() {
                         hb
                     } else {
                         self.turn_step(&p, turn_t, s1, hv).clamp(hb, hv)
                     };
-                    hv = if hx > hb && kh * (hx / hv) <= TURN_EXACT_KAPPA_H {
-                        a_h_step = f64::INFINITY;
-                        hx
+                    let (b0, b1) = TURN_EXACT_BLEND;
+                    let x = kh * (hx / hv);
+                    if hx > hb && x < b1 {
+                        let t = ((x - b0) / (b1 - b0)).max(0.0);
+                        let w = 1.0 - t * t * (3.0 - 2.0 * t);
+                        hv = hb + w * (hx - hb);
+                        a_h_step = a_h / (1.0 - w);
                     } else {
-                        hb
-                    };
+                        hv = hb;
+                    }
                 }
                 // Graded first steps: the lag of n behind the slip direction
                 // at yield relaxes within ~1/κ, which RK4 at κ·h ≈ 2 resolves
@@ -1026,12 +1054,12 @@ mod tests {
     }
 
     /// `advance` from a fixed state over steps h that cross the thresholds
-    /// of its step kinds: a single RK4 step up to κ·h = 2 (the bound of
-    /// `rates`), ⌈κ·h/2⌉ RK4 sub-steps beyond, the quasi-steady step
+    /// of its step kinds: a single RK4 step up to κ·h = 1.5 (the bound of
+    /// `rates`), ⌈κ·h/1.5⌉ RK4 sub-steps beyond, the quasi-steady step
     /// blended in from κ·h = 16 to 18.
     #[test]
     fn advance_is_continuous_across_its_step_kinds() {
-        use super::{KAPPA_H, MAX_SUB, PState, QS_BLEND, StripSums};
+        use super::{KAPPA_H, KAPPA_H_STIFF, MAX_SUB, PState, QS_BLEND, StripSums};
         // k = 0.07, J = (0.11, 1.93, −25), the strip at Y = 0.3 (q2 ≈ −357):
         // from s0 = 0.2, κ = (2/3)|v| grows from ≈ 41 along the step.
         let st = Scaled::new(0.07, 0.11, 1.93, -25.0, 0.0).strip(0.3);
@@ -1054,8 +1082,12 @@ mod tests {
             let q = st.advance::<true>(&p, h, c2, s2, f64::INFINITY, None);
             [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
         };
-        let mut thresholds: Vec<f64> = (1..=MAX_SUB).map(|m| m as f64 * KAPPA_H).collect();
-        thresholds.push(QS_BLEND * MAX_SUB as f64 * KAPPA_H);
+        let qs = MAX_SUB as f64 * KAPPA_H;
+        let mut thresholds: Vec<f64> = (1..)
+            .map(|m| m as f64 * KAPPA_H_STIFF)
+            .take_while(|&x| x < qs)
+            .collect();
+        thresholds.extend([qs, QS_BLEND * qs]);
         for target in thresholds {
             // h where the bound κ·h reaches the threshold (bisection).
             let (mut lo, mut hi) = (1e-4, 0.5);
