@@ -87,8 +87,8 @@ const MAX_SUB_ANISO: usize = 16;
 /// were wrong by up to 0.2 at tol = 1e-2 (k = 0.151, J = (0.358, 0.648,
 /// −43.2)). 4 instead of 3 (docs/decisions/0083): at tol 1e-3 cases h, a,
 /// b, c −12/−6/−8/−15 % instructions (with KAPPA_H_STIFF), worst error/tol
-/// of `cargo xtask ep-sets` over 16 seeds and 5 fresh ones not worse; 5:
-/// −17/−12/−15/−20 %, but 0.61·tol at 1e-4 on the fresh seeds (0.47
+/// of `cargo xtask ep-sets` over 16 seeds and 11 fresh ones not worse; 5:
+/// −17/−12/−15/−20 %, but 0.61·tol at 1e-4 on 4 of the fresh seeds (0.47
 /// before), 6: 0.64·tol on the 16.
 const TURN_PER_STEP: f64 = 4.0;
 /// Largest number of sub-steps per step for the turn of the slip direction.
@@ -467,8 +467,7 @@ impl Strip {
 
     /// `p` advanced by h in RK4 sub-steps where the step needs mr > 1 of
     /// them (real: κ·h/KAPPA_H_STIFF or the turn's count, see `advance`):
-    /// with
-    /// n = ⌊mr⌋ and f = mr − n, a first sub-step of length
+    /// with n = ⌊mr⌋ and f = mr − n, a first sub-step of length
     /// r = lo + f·(h/(n + 1) − lo), lo = f·h/mr, then n equal ones of
     /// (h − r)/n ≤ h/mr (within the margin). The lengths are continuous in
     /// mr: r = 0 where f = 0, and all n + 1 sub-steps are h/(n + 1) as f → 1,
@@ -1100,8 +1099,8 @@ mod tests {
             // the fourth: the difference across it must match those on
             // either side to within the curvature (≈ 1e-16 here) and
             // round-off. Equal sub-steps (⌈κ·h/2⌉ of them) and a switch to
-            // the quasi-steady step without the blend jump by 1e-6…1e-3 in
-            // the strip sums and n there (measured, docs/decisions/0082).
+            // the quasi-steady step without the blend jumped by 4e-5…8e-3
+            // in the strip sums and n there (measured, docs/decisions/0082).
             let d = 1e-8 * lo;
             let v: Vec<[f64; 5]> = (0..6).map(|i| go(lo + (i as f64 - 2.5) * d)).collect();
             for j in 0..5 {
