@@ -376,6 +376,7 @@ type Panel = (f64, f64, Node, Node, u32, f64, Option<f64>);
 
 /// The interior nodes of the 5-point Lobatto rule on the panel of midpoint
 /// `m` and half-width `hw`: m, m − hw·√(3/7), m + hw·√(3/7).
+#[inline(always)]
 fn lobatto_nodes(f: &mut impl FnMut(f64) -> Node, m: f64, hw: f64) -> [Node; 3] {
     [f(m), f(m - hw * LOBATTO_X), f(m + hw * LOBATTO_X)]
 }
