@@ -360,9 +360,35 @@ fn max_abs_j(k: f64, dx: f64, d: &[f64; 4]) -> f64 {
 /// first edge at 8/|J3|); 0.25 takes 12–27 % more strips than 0.5.
 const ACCEPT_KINK: f64 = 0.5;
 
-/// A panel: (lo, hi, integrand and topology at lo, at hi, depth, weight of
-/// its value in the result).
-type Panel = (f64, f64, ([f64; 4], u32), ([f64; 4], u32), u32, f64);
+/// Largest Simpson–Lobatto difference of a half, in allowed changes, at
+/// which the pair check of [`lobatto_kronrod_in_phi`] may keep its Lobatto
+/// value (docs/decisions/0080).
+const PAIR_STAGE1: f64 = 20.0;
+
+/// The integrand in φ and a strip's flow topology at a node.
+type Node = ([f64; 4], u32);
+
+/// A panel: lo, hi, the nodes there, its depth, the weight of its value in
+/// the result, and, for the halves of a refined panel, the share of the
+/// halves' pair that does not pass the pair check (their interior Lobatto
+/// nodes are then on the stack of nodes already evaluated).
+type Panel = (f64, f64, Node, Node, u32, f64, Option<f64>);
+
+/// The interior nodes of the 5-point Lobatto rule on the panel of midpoint
+/// `m` and half-width `hw`: m, m − hw·√(3/7), m + hw·√(3/7).
+#[inline(always)]
+fn lobatto_nodes(f: &mut impl FnMut(f64) -> Node, m: f64, hw: f64) -> [Node; 3] {
+    [f(m), f(m - hw * LOBATTO_X), f(m + hw * LOBATTO_X)]
+}
+
+/// The 5-point Lobatto value of a panel of half-width `hw` from the sum of
+/// its end values `ends` and its interior nodes ([`lobatto_nodes`]).
+#[inline]
+fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
+    std::array::from_fn(|i| {
+        hw * (LK_ENDS.1 * ends[i] + LOBATTO_W.1 * (fa.0[i] + fb.0[i]) + LOBATTO_W.0 * fm.0[i])
+    })
+}
 
 /// Adaptive Lobatto–Kronrod panels in φ (Y = sin φ) from the sorted edges
 /// `breaks` (from −π/2 to π/2); `strip(Y)` gives a strip's
@@ -379,20 +405,30 @@ type Panel = (f64, f64, ([f64; 4], u32), ([f64; 4], u32), u32, f64);
 ///    the allowed change (4 more strips); otherwise both halves are
 ///    refined.
 ///
-/// Both decisions are blended (the share of the next stage a C¹ step from
-/// 1 to 2 times the allowed change), so that a decision adds no jump in the
-/// inputs. A change of the topology gate moves the result continuously too:
-/// it flips where a kink crosses a panel's end (its effect on the panel's
-/// value vanishing there) or appears with no amplitude. All three rules use
-/// the panel's ends: neighbouring panels share their end strips and a
-/// panel's halves its ends and midpoint, so a panel costs 3 or 7 new strips
-/// (the strips at Y = ±1 are empty), 12 with the former rule (4-point
-/// Gauss–Legendre checked against its halves, [`adaptive_in_phi`]), whose
-/// 8-point value was far more accurate than needed (docs/decisions/0074).
-/// Stage 1 settles mostly the halves of refined panels (the initial panels,
-/// 3–50 times the allowed change apart in Simpson's value on the bench
-/// set, go on to stage 2): a refinement then costs 2 × 3 strips instead of
-/// 2 × 7 (docs/decisions/0079).
+/// Pair check: where a refined panel's strips (its nine and its halves'
+/// stage-1 ones) differ in flow topology, the
+/// sum of its halves' 5-point Lobatto values (their stage-1 strips) is
+/// compared with the panel's 9-point Kronrod value, two rules on different
+/// nodes. Where they agree to ACCEPT_KINK times the panel's allowed change,
+/// a half keeps its Lobatto value in stage 1 up to PAIR_STAGE1 times its own
+/// allowed change (instead of 1): near a kink Simpson's value is far off
+/// while the Lobatto values of the halves are not (docs/decisions/0080).
+///
+/// Every decision is blended (the share of the next step a C¹ step from 1
+/// to 2 times the allowed change; the pair check's share multiplies the
+/// wider stage 1's), so that a decision adds no jump in the inputs. A change
+/// of the topology gate moves the result continuously too: it flips where a
+/// kink crosses a panel's end (its effect on the panel's value vanishing
+/// there) or appears with no amplitude. All three rules use the panel's
+/// ends: neighbouring panels share their end strips and a panel's halves
+/// its ends and midpoint, so a panel costs 3 or 7 new strips (the strips at
+/// Y = ±1 are empty), 12 with the former rule (4-point Gauss–Legendre
+/// checked against its halves, [`adaptive_in_phi`]), whose 8-point value
+/// was far more accurate than needed (docs/decisions/0074). Stage 1 settles
+/// mostly the halves of refined panels (the initial panels, 3–50 times the
+/// allowed change apart in Simpson's value on the bench set, go on to stage
+/// 2): a refinement then costs 2 × 3 strips instead of 2 × 7
+/// (docs/decisions/0079).
 pub(crate) fn lobatto_kronrod_in_phi(
     breaks: &[f64],
     tol: f64,
@@ -401,7 +437,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
     mut strip: impl FnMut(f64) -> ([f64; 3], u32),
 ) -> (f64, f64, f64) {
     // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx), and the topology.
-    let mut f = |phi: f64| -> ([f64; 4], u32) {
+    let mut f = |phi: f64| -> Node {
         let (y, cphi) = phi.sin_cos();
         if cphi <= 0.0 || phi.abs() >= FRAC_PI_2 {
             return ([0.0; 4], 0);
@@ -414,15 +450,18 @@ pub(crate) fn lobatto_kronrod_in_phi(
     };
     let mut total = [0.0; 4];
     let mut stack: Vec<Panel> = Vec::with_capacity(32);
+    // Interior Lobatto nodes of the halves on `stack` that have them (in
+    // the same order: a half's are on top when it is taken).
+    let mut known: Vec<[Node; 3]> = Vec::with_capacity(16);
     let mut flo = f(breaks[0]);
     for w in breaks.windows(2) {
         let fhi = f(w[1]);
         if w[1] > w[0] {
-            stack.push((w[0], w[1], flo, fhi, 0, 1.0));
+            stack.push((w[0], w[1], flo, fhi, 0, 1.0, None));
         }
         flo = fhi;
     }
-    while let Some((lo, hi, fl, fh, depth, weight)) = stack.pop() {
+    while let Some((lo, hi, fl, fh, depth, weight, pair)) = stack.pop() {
         let (m, hw) = (0.5 * (lo + hi), 0.5 * (hi - lo));
         // The strips at Y = ±1 (zero width) count as any topology.
         let ends = [(fl.1, lo), (fh.1, hi)];
@@ -430,24 +469,31 @@ pub(crate) fn lobatto_kronrod_in_phi(
         let mut kink = fl.1 != fh.1 && lo.abs() < FRAC_PI_2 && hi.abs() < FRAC_PI_2;
         // Stage 1: the 5-point Lobatto value against the 3-point one
         // (Simpson, on the ends and the midpoint).
-        let fm = f(m);
-        let fa = f(m - hw * LOBATTO_X);
-        let fb = f(m + hw * LOBATTO_X);
-        for v in [&fm, &fa, &fb] {
+        let nodes = match pair {
+            Some(_) => known.pop().unwrap_or_else(|| lobatto_nodes(&mut f, m, hw)),
+            None => lobatto_nodes(&mut f, m, hw),
+        };
+        for v in &nodes {
             kink |= *topo.get_or_insert(v.1) != v.1;
         }
-        let (mut l5, mut d) = ([0.0; 4], [0.0; 4]);
-        for i in 0..4 {
-            let e = fl.0[i] + fh.0[i];
-            l5[i] =
-                hw * (LK_ENDS.1 * e + LOBATTO_W.1 * (fa.0[i] + fb.0[i]) + LOBATTO_W.0 * fm.0[i]);
-            d[i] = l5[i] - hw * ((1.0 / 3.0) * e + (4.0 / 3.0) * fm.0[i]);
-        }
+        let [fm, fa, fb] = &nodes;
+        let ends: [f64; 4] = std::array::from_fn(|i| fl.0[i] + fh.0[i]);
+        let l5 = lobatto5(hw, &ends, &nodes);
+        let mut d: [f64; 4] =
+            std::array::from_fn(|i| l5[i] - hw * ((1.0 / 3.0) * ends[i] + (4.0 / 3.0) * fm.0[i]));
         let share = if kink { ACCEPT_KINK } else { 1.0 };
         let allowed = share * tol * (hi - lo) / PI;
         // The share of the panel that goes on to stage 2 (blended like a
-        // refinement, whatever the depth).
-        let go_on = refine_share(max_abs_j(k, dx, &d), allowed, 0, 1);
+        // refinement, whatever the depth); with a passed pair check it is
+        // that of the wider stage 1.
+        let e1 = max_abs_j(k, dx, &d);
+        let mut go_on = refine_share(e1, allowed, 0, 1);
+        if let Some(split) = pair
+            && split < 1.0
+            && go_on > 0.0
+        {
+            go_on *= 1.0 - (1.0 - split) * (1.0 - refine_share(e1, PAIR_STAGE1 * allowed, 0, 1));
+        }
         if go_on < 1.0 {
             let w = weight * (1.0 - go_on);
             for i in 0..4 {
@@ -460,7 +506,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
         let weight = weight * go_on;
         // Stage 2: the 9-point Kronrod value against the 5-point Lobatto one.
         let mut kv: [f64; 4] = std::array::from_fn(|i| {
-            LK_ENDS.0 * (fl.0[i] + fh.0[i]) + LK_MID * fm.0[i] + LK_LOBATTO * (fa.0[i] + fb.0[i])
+            LK_ENDS.0 * ends[i] + LK_MID * fm.0[i] + LK_LOBATTO * (fa.0[i] + fb.0[i])
         });
         for (t, wk) in LK_ADDED {
             let v = f(m + hw * t);
@@ -483,8 +529,28 @@ pub(crate) fn lobatto_kronrod_in_phi(
             }
         }
         if refine > 0.0 {
-            stack.push((lo, m, fl, fm, depth + 1, weight * refine));
-            stack.push((m, hi, fm, fh, depth + 1, weight * refine));
+            // The halves' stage-1 strips now, for the pair check.
+            let q = 0.5 * hw;
+            let nl = lobatto_nodes(&mut f, lo + q, q);
+            let nr = lobatto_nodes(&mut f, m + q, q);
+            for v in nl.iter().chain(&nr) {
+                kink |= *topo.get_or_insert(v.1) != v.1;
+            }
+            let split = if kink {
+                let el: [f64; 4] = std::array::from_fn(|i| fl.0[i] + fm.0[i]);
+                let er: [f64; 4] = std::array::from_fn(|i| fm.0[i] + fh.0[i]);
+                let (vl, vr) = (lobatto5(q, &el, &nl), lobatto5(q, &er, &nr));
+                let d: [f64; 4] = std::array::from_fn(|i| vl[i] + vr[i] - kv[i]);
+                let allowed = ACCEPT_KINK * tol * (hi - lo) / PI;
+                refine_share(max_abs_j(k, dx, &d), allowed, 0, 1)
+            } else {
+                1.0
+            };
+            let w = weight * refine;
+            known.push(nl);
+            known.push(nr);
+            stack.push((lo, m, fl, *fm, depth + 1, w, Some(split)));
+            stack.push((m, hi, *fm, fh, depth + 1, w, Some(split)));
         }
     }
     to_j(k, dx, &total)
