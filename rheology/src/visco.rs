@@ -62,9 +62,9 @@
 //! everywhere).
 //!
 //! Measured accuracy and cost: crate README, section "Viscoelastic model";
-//! what was tried instead: docs/decisions/0045 to 0048, 0076 and 0077. The former
-//! fixed-grid scheme is kept in [`reference`] as the tests' independent
-//! reference.
+//! what was tried instead: docs/decisions/0045 to 0048, 0076, 0077 and
+//! 0084. The former fixed-grid scheme is kept in [`reference`] as the
+//! tests' independent reference.
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
