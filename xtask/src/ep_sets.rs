@@ -19,7 +19,10 @@
 //! points (k ∈ {0.5, 1, 2, 5}, |J1|, |J2| ≤ 5, J3 ∈ [2, 26]) and 60
 //! through wide-range ones (k 0.05–20 log-uniform, |J1| ≤ 20, |J2| ≤ 3,
 //! |J3| ≤ 100): tolerance-driven jumps show up at their full size, a kink
-//! of the model at ≲ 1e-5.
+//! of the model at ≲ 1e-5; the worst line's start and direction are printed
+//! in full for `ep-sets line K J1 J2 J3 D1 D2 D3 [TOL [N]]`, which prints
+//! the second differences (in units of tol) at each of N points (default
+//! 150) 1e-4 apart along J + i·1e-4·D.
 #![allow(clippy::unwrap_used)]
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate};
@@ -95,6 +98,18 @@ pub fn run(a: &[String]) -> Result<(), String> {
             })?;
             lines(seed, tol)
         }
+        Some("line") => {
+            let v: Vec<f64> = a[1..]
+                .iter()
+                .map(|t| t.parse().map_err(|_| format!("bad number `{t}`")))
+                .collect::<Result<_, _>>()?;
+            if v.len() < 7 {
+                return Err("line needs K J1 J2 J3 D1 D2 D3 [TOL [N]]".to_string());
+            }
+            let tol = v.get(7).copied().unwrap_or(1e-3);
+            let n = v.get(8).map_or(150, |&n| n as usize);
+            line(v[0], [v[1], v[2], v[3]], [v[4], v[5], v[6]], n, tol)
+        }
         Some("bits") => {
             let tols = match a.get(1) {
                 Some(t) => vec![t.parse().map_err(|_| format!("bad TOL `{t}`"))?],
@@ -103,7 +118,8 @@ pub fn run(a: &[String]) -> Result<(), String> {
             bits(&tols)
         }
         _ => Err(
-            "ep-sets needs `refs FILE`, `errs FILE`, `lines [SEED [TOL]]` or `bits [TOL]`"
+            "ep-sets needs `refs FILE`, `errs FILE`, `lines [SEED [TOL]]`, \
+             `line K J1 J2 J3 D1 D2 D3 [TOL [N]]` or `bits [TOL]`"
                 .to_string(),
         ),
     }
@@ -194,6 +210,33 @@ fn max_second_difference(
     }))
 }
 
+/// Second differences (per output, in units of tol) at every point of one
+/// line of `n` points 1e-4 apart.
+fn line(k: f64, p: [f64; 3], d: [f64; 3], n: usize, tol: f64) -> Result<(), String> {
+    let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
+    let mut v = Vec::with_capacity(n);
+    for i in 0..n {
+        let s = i as f64 * 1e-4;
+        let inp = Inputs::new(k, p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2])
+            .map_err(|e| e.to_string())?;
+        let o = evaluate(&inp, Model::ElasticPlastic, acc).map_err(|e| e.to_string())?;
+        v.push([o.j4, o.j5, o.j6]);
+    }
+    let mut worst = (0.0f64, 0);
+    for (i, w) in v.windows(3).enumerate() {
+        let e: Vec<f64> = (0..3)
+            .map(|j| (w[2][j] - 2.0 * w[1][j] + w[0][j]) / tol)
+            .collect();
+        let m = e.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        if m > worst.0 {
+            worst = (m, i + 1);
+        }
+        println!("{} {:+.4e} {:+.4e} {:+.4e}", i + 1, e[0], e[1], e[2]);
+    }
+    println!("max |Δ²| = {:.4}·tol at point {}", worst.0, worst.1);
+    Ok(())
+}
+
 fn lines(seed: u64, tol: f64) -> Result<(), String> {
     let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
     let mut r = Lcg::new(seed);
@@ -222,7 +265,10 @@ fn lines(seed: u64, tol: f64) -> Result<(), String> {
             let m = max_second_difference(k, p, d, (1e-4, 150), acc)? / tol;
             if m > worst {
                 worst = m;
-                at = format!("k = {k:.4}, J = ({:.4}, {:.4}, {:.4})", p[0], p[1], p[2]);
+                at = format!(
+                    "k = {k:.4}, J = ({:.4}, {:.4}, {:.4}); k = {k:?}, J = {p:?}, d = {d:?}",
+                    p[0], p[1], p[2]
+                );
             }
         }
         println!("{set}: max |Δ²| = {worst:.4}·tol ({at})");

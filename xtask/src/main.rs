@@ -3,8 +3,9 @@
 //! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
 //! - `prof-visco CASE TOL REPS [old|gauss]`: the same for the viscoelastic benches;
 //! - `ep-sets refs|errs FILE [SEED]`, `ep-sets bits [TOL]`, `ep-sets lines
-//!   [SEED [TOL]]`: the elastic/plastic solver against 128-panel references on
-//!   307 cases, its results' bits, and its smoothness along random lines;
+//!   [SEED [TOL]]`, `ep-sets line K J1 J2 J3 D1 D2 D3 [TOL [N]]`: the
+//!   elastic/plastic solver against 128-panel references on 307 cases, its
+//!   results' bits, and its smoothness along random lines or one line;
 //! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
 //!   random points;
 //! - `map-budget [N [TOL]]`: the contact's map against direct evaluation on a
@@ -30,11 +31,14 @@ commands:
                                   (prof_visco.rs); `old` = the former fixed-grid scheme,
                                   `gauss` = the former Gauss-Legendre panel rule
   ep-sets refs FILE [SEED] | errs FILE [SEED] | bits [TOL] | lines [SEED [TOL]]
+        | line K J1 J2 J3 D1 D2 D3 [TOL [N]]
                                   elastic/plastic solver on 307 cases (ep_sets.rs): write
                                   128-panel references, worst error/tol per set against
                                   them (SEED: other random cases), the results' bit
-                                  patterns, or the largest second differences along 120
-                                  random lines
+                                  patterns, the largest second differences along 120
+                                  random lines (the worst line's start and direction in
+                                  full), or the second differences at each of N points
+                                  (default 150) 1e-4 apart along one line
   map-check K TOL N RLOG [DX GY]  rheology map against evaluate at TOL/100 on N random
                                   points, |J| log-uniform in [0.1, 10^(RLOG-1)]
   map-budget [N [TOL]]            the contact's map against direct evaluation: time and

@@ -18,20 +18,23 @@
 //!   (n, ∫Zx dX, ∫Zy dX, ∫Zy X dX) (a segment whose largest κ·h stays below
 //!   the stability margin may use a longer step, see `solve_adaptive`);
 //!   steps are sub-divided where the relaxation
-//!   rate (2/3)|v| makes RK4 unstable, and where it exceeds 8 sub-steps per
-//!   step n follows its quasi-steady solution θ = α − asin(α'/κ) (the
+//!   rate (2/3)|v| makes RK4 unstable or inaccurate (κ·h > 2, within stiff
+//!   segments κ·h > 1.5; sub-steps whose lengths vary continuously with
+//!   κ·h, so that the outputs stay smooth in the inputs),
+//!   and where it exceeds 8 sub-steps per step n follows its quasi-steady
+//!   solution θ = α − asin(α'/κ) (blended in from 8 to 9 sub-steps; the
 //!   rigid/plastic direction with the first elastic lag; for gy ≠ 1 the root
 //!   of dθ/ds = α' of the anisotropic law, and only beyond 4·16·f sub-steps,
 //!   f = 1 + |gy − 1|/min(1, gy)), integrated by Simpson's rule; on such
 //!   stiff segments the steps are also shortened where the slip direction
-//!   α turns fast (|α'|·h ≤ 3·s_step, near a strip's
+//!   α turns fast (|α'|·h ≤ 4·s_step, near a strip's
 //!   crossing of vy = 0) and graded from κ·h = 1/2 after yield, where the
 //!   lag of n behind v̂ relaxes within ~1/κ; in [`Strip::integrate_etd`]
 //!   (used by `evaluate`, not by the fixed-resolution reference) stiff
 //!   isotropic segments on which the slip direction turns slowly take
 //!   exponential steps instead (ETDRK4 on the Riccati equation of
-//!   tan((α − θ)/2), `Strip::etd`), several s-steps long, and where κ·h ≤ 1
-//!   a step near vy = 0 is the one over which α turns by exactly 3·s_step
+//!   tan((α − θ)/2), `Strip::etd`), several s-steps long, and where κ·h ≤ 0.8
+//!   a step near vy = 0 is the one over which α turns by exactly 4·s_step
 //!   (`Strip::turn_step`, closed form) rather than the bound's shorter one;
 //! * elastic unloading where g = (v·n)·cos s + (3/2)·sin s turns negative
 //!   (v·n < dL/dX), located inside the step on the integrated g (the root

@@ -72,16 +72,25 @@ pub(super) const ETD_MIN_STEP: f64 = 2.5;
 /// unchanged there and on 374 cases with |J| ≤ 26 (docs/decisions/0066);
 /// 4: another −30 %, but the worst error/tol at 1e-3 rose 0.32 → 0.35.
 const MAX_SUB: usize = 8;
+/// The quasi-steady branch is blended in (a C¹ step in κ·h) from MAX_SUB
+/// (or the anisotropic count) to this times it stability sub-steps, so
+/// that the switch adds no jump in the inputs: switched without the blend,
+/// the step's result jumps by up to 1.2e-3 in n
+/// (docs/decisions/0082). 1.125: 8 to 9 sub-steps, κ·h from 16 to 18.
+const QS_BLEND: f64 = 1.125;
 /// The same count's base for an anisotropic stiffness (see `advance`).
 const MAX_SUB_ANISO: usize = 16;
 /// Largest turn of the slip direction α per step, as a multiple of the
-/// s-step: steps (and sub-steps) are shortened to |α'|·h ≤ 3·s_step near a
+/// s-step: steps (and sub-steps) are shortened to |α'|·h ≤ 4·s_step near a
 /// strip's crossing of the line vy = 0, where α turns by up to π within
 /// ΔX ≈ |a/q2| (high spin). Without it, strips crossing close to the pole
 /// were wrong by up to 0.2 at tol = 1e-2 (k = 0.151, J = (0.358, 0.648,
-/// −43.2)); 3 keeps the worst error/tol over 164 cases ≤ 0.7 (1, 2 and 5
-/// were checked: no systematic gain below 3, ≤ 0.7 at all of them).
-const TURN_PER_STEP: f64 = 3.0;
+/// −43.2)). 4 instead of 3 (docs/decisions/0083): at tol 1e-3 cases h, a,
+/// b, c −12/−6/−8/−15 % instructions (with KAPPA_H_STIFF), worst error/tol
+/// of `cargo xtask ep-sets` over 16 seeds and 11 fresh ones not worse; 5:
+/// −17/−12/−15/−20 %, but 0.61·tol at 1e-4 on 4 of the fresh seeds (0.47
+/// before), 6: 0.64·tol on the 16.
+const TURN_PER_STEP: f64 = 4.0;
 /// Largest number of sub-steps per step for the turn of the slip direction.
 const MAX_SUB_TURN: f64 = 256.0;
 /// Largest κ·h of a step that is limited by the exact turn of the slip
@@ -94,16 +103,31 @@ const MAX_SUB_TURN: f64 = 256.0;
 /// 0.147 → 0.184 at 1e-3), with 2 to 0.371 there; 0.5 is no more accurate
 /// (tests/convergence.rs 0.34 against 0.30) for the same instructions.
 const TURN_EXACT_KAPPA_H: f64 = 1.0;
+/// κ·h of the exact-turn step up to which it is taken whole, and from which
+/// the bound's step is taken instead; blended in between (see
+/// `Strip::plastic`). Switched hard at TURN_EXACT_KAPPA_H, the choice made
+/// jumps of 0.042·tol along a random line (`cargo xtask ep-sets lines 3`
+/// with TURN_PER_STEP = 4, docs/decisions/0083).
+const TURN_EXACT_BLEND: (f64, f64) = (0.8 * TURN_EXACT_KAPPA_H, TURN_EXACT_KAPPA_H);
 /// Largest number of steps of a plastic segment (a guard: the turn limit
-/// needs at most span/s_step·(1 + π/(3·s_step)) steps).
+/// needs at most span/s_step·(1 + π/(4·s_step)) steps).
 const MAX_STEPS: usize = 1 << 16;
-/// RK4 stability margin on κ·h (the real stability limit is 2.78; at 2 the
+/// RK4 stability margin on κ·h of non-stiff segments, and the unit of the
+/// quasi-steady threshold MAX_SUB·KAPPA_H (the real stability limit is 2.78; at 2 the
 /// RK4 amplification of the linearised relaxation is 1/3, positive, so the
 /// transient still decays monotonically). Raised from 1.2 without changing
 /// the verified accuracy of `evaluate` (rheology/tests/convergence.rs; its
 /// worst error/tol: crate README, section Convergence).
 const KAPPA_H: f64 = 2.0;
 
+/// RK4 margin on κ·h of the steps that `Strip::advance` takes whole on
+/// stiff segments (sub-steps beyond it). 1.5 rather than KAPPA_H: with the
+/// longer turn-limited steps of TURN_PER_STEP = 4 it keeps the worst
+/// error/tol of the wide-range sets where it was (docs/decisions/0083:
+/// 0.165 / 0.441 at tol 1e-3 / 1e-4 on 16 seeds, against 0.317 / 0.541 with
+/// KAPPA_H), for +8 % instructions on the random sets at 1e-3 and ≤ 0.2 %
+/// on the bench set at 1e-3 and 1e-4 (case a at 1e-2 +14 %).
+const KAPPA_H_STIFF: f64 = 1.5;
 /// Relative slack of the κ·h test of a whole segment (round-off of the bound).
 const KAPPA_H_SLACK: f64 = 1e-12;
 /// κ·h of the first step after yield on stiff segments (doubled per step).
@@ -379,9 +403,11 @@ impl Strip {
     }
 
     /// Advance the plastic state by h (cos/sin of h/2 given): one RK4 step,
-    /// or equal sub-steps where κ·h exceeds the RK4 stability margin or the
-    /// slip direction turns by more than `a_h` within the step (beyond
-    /// MAX_SUB stability sub-steps: the quasi-steady direction).
+    /// or sub-steps whose lengths vary continuously with the step's bounds
+    /// (`Strip::sub_steps`) where κ·h exceeds the RK4 margin KAPPA_H_STIFF
+    /// or the slip direction turns by more than `a_h` within the step
+    /// (beyond κ·h = MAX_SUB·KAPPA_H: the quasi-steady direction, blended in
+    /// up to QS_BLEND times that).
     /// `rates`: the step's (κ·h, |α'|·h) bounds if the caller has them.
     /// Inlined: its call and the state passed through memory cost ≈ 40
     /// instructions per stiff step (bit-identical results; cases a, b, c
@@ -395,7 +421,6 @@ impl Strip {
         c2: f64,
         s2: f64,
         a_h: f64,
-        cache: &mut (f64, f64, f64),
         rates: Option<(f64, f64)>,
     ) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
@@ -404,11 +429,14 @@ impl Strip {
             Some(r) => r,
             None => self.rates::<ISO>(p.sn, p.cs, s1, c1, h),
         };
-        if kh.is_nan() || (kh <= KAPPA_H && ah <= a_h) {
+        if kh.is_nan() || (kh <= KAPPA_H_STIFF && ah <= a_h) {
             return self.rk4::<ISO>(p, h, c2, s2);
         }
-        let mk = (kh / KAPPA_H).ceil();
-        let m = mk.max((ah / a_h).ceil().min(MAX_SUB_TURN));
+        // Sub-steps needed for accuracy (κ·h ≤ KAPPA_H_STIFF) and the turn,
+        // as a real number; the quasi-steady branch from κ·h > MAX_SUB·
+        // KAPPA_H.
+        let mk = kh / KAPPA_H;
+        let mr = (kh / KAPPA_H_STIFF).max((ah / a_h).min(MAX_SUB_TURN));
         // With gy ≠ 1 the bound on κ·h (see `rates`) can exceed the actual
         // relaxation rate of θ by up to f = 1 + |gy − 1|/min(1, gy), and the
         // quasi-steady direction is then wrong where the flow is not yet
@@ -423,20 +451,61 @@ impl Strip {
             4.0 * MAX_SUB_ANISO as f64 * (1.0 + (self.gy - 1.0).abs() / self.gy.min(1.0))
         };
         if mk <= max_sub {
-            let m = m as usize;
-            let hs = h / m as f64;
-            if cache.0 != hs {
-                let (s2s, c2s) = sin_cos_small(0.5 * hs);
-                *cache = (hs, c2s, s2s);
-            }
-            let (_, c2s, s2s) = *cache;
-            let mut q = *p;
-            for _ in 0..m {
-                q = self.rk4::<ISO>(&q, hs, c2s, s2s);
-            }
-            return q;
+            return self.sub_steps::<ISO>(p, (h, c2, s2), mr);
         }
-        self.quasi_steady(p, h, c2, s2)
+        let qs = self.quasi_steady(p, h, c2, s2);
+        // Blended from the sub-steps to the quasi-steady step over
+        // max_sub < mk < QS_BLEND·max_sub (a C¹ step in mk), so that the
+        // switch adds no jump in the inputs.
+        let t = (mk / max_sub - 1.0) / (QS_BLEND - 1.0);
+        if t >= 1.0 {
+            return qs;
+        }
+        let rk = self.sub_steps::<ISO>(p, (h, c2, s2), mr);
+        blend(&rk, &qs, t * t * (3.0 - 2.0 * t))
+    }
+
+    /// `p` advanced by h in RK4 sub-steps where the step needs mr > 1 of
+    /// them (real: κ·h/KAPPA_H_STIFF or the turn's count, see `advance`):
+    /// with n = ⌊mr⌋ and f = mr − n, a first sub-step of length
+    /// r = lo + f·(h/(n + 1) − lo), lo = f·h/mr, then n equal ones of
+    /// (h − r)/n ≤ h/mr (within the margin). The lengths are continuous in
+    /// mr: r = 0 where f = 0, and all n + 1 sub-steps are h/(n + 1) as f → 1,
+    /// where the next n takes over. The count is ⌈mr⌉ as with equal
+    /// sub-steps, whose length jumps where ⌈mr⌉ does (second differences up
+    /// to 0.13·tol along lines at tol 1e-3, docs/decisions/0082). r = lo
+    /// alone (the n sub-steps at the margin, the remainder first) is
+    /// continuous too, but less accurate (worst error/tol of the wide-range
+    /// set at 1e-4 0.51 against 0.46). The first sub-step's (sin, cos) of
+    /// r/2 = h/2 − n·hs/2 come from rotating h/2 (`c2`, `s2`) back n times
+    /// by hs/2 (a few ulps; cheaper than a second `sin_cos_small`: case h
+    /// at tol 1e-2 +2.2 % instead of +4.8 % instructions against equal
+    /// sub-steps, whose sin/cos were cached across steps).
+    #[inline(always)]
+    fn sub_steps<const ISO: bool>(
+        &self,
+        p: &PState,
+        (h, c2, s2): (f64, f64, f64),
+        mr: f64,
+    ) -> PState {
+        let n = mr.floor();
+        let f = mr - n;
+        let lo = h * f / mr;
+        let r = lo + f * (h / (n + 1.0) - lo);
+        let hs = (h - r) / n;
+        let (s2s, c2s) = sin_cos_small(0.5 * hs);
+        let mut q = *p;
+        if r > 0.0 {
+            let (mut s2r, mut c2r) = (s2, c2);
+            for _ in 0..n as usize {
+                (s2r, c2r) = (s2r * c2s - c2r * s2s, c2r * c2s + s2r * s2s);
+            }
+            q = self.rk4::<ISO>(&q, r, c2r, s2r);
+        }
+        for _ in 0..n as usize {
+            q = self.rk4::<ISO>(&q, hs, c2s, s2s);
+        }
+        q
     }
 
     /// Quasi-steady direction over h (stiff limit), Simpson's rule.
@@ -522,8 +591,6 @@ impl Strip {
         let (s2, c2) = sin_cos_small(0.5 * h);
         // sin/cos of the whole step (double angle).
         let sc_h = (2.0 * s2 * c2, (c2 - s2) * (c2 + s2));
-        // (sub-step, cos, sin of half of it) of the last sub-divided step.
-        let mut cache = (f64::NAN, 1.0, 0.0);
         let mut p = PState {
             sn,
             cs,
@@ -539,7 +606,7 @@ impl Strip {
         } else {
             GRADED_KAPPA_H / ((2.0 / 3.0) * self.a.hypot(self.vy(self.c * sn))).max(RATE_FLOOR)
         };
-        // tan of the turn limit (`turn_step`; a_h ≤ 3·0.3 < π/2, the largest
+        // tan of the turn limit (`turn_step`; a_h ≤ 4·0.3 < π/2, the largest
         // s-step).
         let turn_t = if nonstiff || !exact_turn {
             f64::NAN
@@ -580,18 +647,26 @@ impl Strip {
                     let hb = hv * (a_h / ah).max(1.0 / MAX_SUB_TURN);
                     // The step to an exact turn of a_h is at least hb (the
                     // bound over-estimates the turn); taken where RK4
-                    // resolves it (κ·h ≤ TURN_EXACT_KAPPA_H, κ·h ∝ h).
+                    // resolves it (κ·h ≤ TURN_EXACT_BLEND.0, κ·h ∝ h), the
+                    // bound's step from κ·h ≥ TURN_EXACT_BLEND.1, and in
+                    // between a step from hb to hx with the turn sub-steps'
+                    // limit from a_h to ∞, both by a C¹ step in κ·h, so that
+                    // the choice adds no jump in the inputs.
                     let hx = if turn_t.is_nan() {
                         hb
                     } else {
                         self.turn_step(&p, turn_t, s1, hv).clamp(hb, hv)
                     };
-                    hv = if hx > hb && kh * (hx / hv) <= TURN_EXACT_KAPPA_H {
-                        a_h_step = f64::INFINITY;
-                        hx
+                    let (b0, b1) = TURN_EXACT_BLEND;
+                    let x = kh * (hx / hv);
+                    if hx > hb && x < b1 {
+                        let t = ((x - b0) / (b1 - b0)).max(0.0);
+                        let w = 1.0 - t * t * (3.0 - 2.0 * t);
+                        hv = hb + w * (hx - hb);
+                        a_h_step = a_h / (1.0 - w);
                     } else {
-                        hb
-                    };
+                        hv = hb;
+                    }
                 }
                 // Graded first steps: the lag of n behind the slip direction
                 // at yield relaxes within ~1/κ, which RK4 at κ·h ≈ 2 resolves
@@ -616,10 +691,10 @@ impl Strip {
                 self.rk4::<ISO>(&p, h, c2, s2)
             } else {
                 s_cur += h;
-                self.advance::<ISO>(&p, h, c2, s2, a_h_step, &mut cache, step_rates)
+                self.advance::<ISO>(&p, h, c2, s2, a_h_step, step_rates)
             };
             let step = (h, last, allow_unload, a_h);
-            if let Some(end) = self.step_end::<ISO>(&p, &mut q, step, &mut cache, acc, rec) {
+            if let Some(end) = self.step_end::<ISO>(&p, &mut q, step, acc, rec) {
                 return end;
             }
             p = q;
@@ -672,7 +747,6 @@ impl Strip {
         p: &PState,
         q: &mut PState,
         (h, last, allow_unload, a_h): (f64, bool, bool, f64),
-        cache: &mut (f64, f64, f64),
         acc: &mut StripSums,
         rec: &mut impl FnMut(Event),
     ) -> Option<PlasticEnd> {
@@ -686,7 +760,7 @@ impl Strip {
                 // Copies for the out-of-line call, so that p and q need not
                 // live in memory on the hot path.
                 let (p0, q0) = (*p, *q);
-                let best = self.locate_unload::<ISO>(&p0, &q0, h, g1, a_h, cache);
+                let best = self.locate_unload::<ISO>(&p0, &q0, h, g1, a_h);
                 *acc += best.acc;
                 let l = 1.5 * self.c * best.cs;
                 rec(Event::Plastic {
@@ -746,7 +820,6 @@ impl Strip {
     ) -> PlasticEnd {
         let a_h = TURN_PER_STEP * s_step;
         let (s2, c2) = sin_cos_small(0.5 * h);
-        let mut cache = (f64::NAN, 1.0, 0.0);
         let mut p = PState {
             sn,
             cs,
@@ -764,14 +837,14 @@ impl Strip {
                     let (s2s, c2s) = sin_cos_small(0.5 * hs);
                     let mut q = p;
                     for _ in 0..m as usize {
-                        q = self.advance::<true>(&q, hs, c2s, s2s, a_h, &mut cache, None);
+                        q = self.advance::<true>(&q, hs, c2s, s2s, a_h, None);
                     }
                     q
                 }
             };
             let last = i == nsteps;
             let step = (h, last, allow_unload, a_h);
-            if let Some(end) = self.step_end::<true>(&p, &mut q, step, &mut cache, acc, rec) {
+            if let Some(end) = self.step_end::<true>(&p, &mut q, step, acc, rec) {
                 return end;
             }
             p = q;
@@ -811,7 +884,6 @@ impl Strip {
         h: f64,
         g1: f64,
         a_h: f64,
-        cache: &mut (f64, f64, f64),
     ) -> PState {
         let g0 = self.g(p.sn, p.cs, p.nx, p.ny).max(0.0);
         let (mut tl, mut gl, mut th, mut gh) = (0.0, g0, h, g1);
@@ -834,7 +906,7 @@ impl Strip {
                 0.5 * (tl + th)
             };
             let (st, ct) = sin_cos_small(0.5 * t);
-            let r = self.advance::<ISO>(p, t, ct, st, a_h, cache, None);
+            let r = self.advance::<ISO>(p, t, ct, st, a_h, None);
             let gr = self.g(r.sn, r.cs, r.nx, r.ny);
             best = r;
             if gr.abs() < UNLOAD_G_TOL {
@@ -862,6 +934,25 @@ impl Strip {
             newton = t - gr / dg;
         }
         best
+    }
+}
+
+/// (1 − w)·a + w·b of two plastic states at the same s (b's), the direction
+/// normalised.
+fn blend(a: &PState, b: &PState, w: f64) -> PState {
+    let v = 1.0 - w;
+    let (nx, ny) = (v * a.nx + w * b.nx, v * a.ny + w * b.ny);
+    let r = (nx * nx + ny * ny).sqrt();
+    let acc = StripSums {
+        ix: v * a.acc.ix + w * b.acc.ix,
+        iy: v * a.acc.iy + w * b.acc.iy,
+        ixy: v * a.acc.ixy + w * b.acc.ixy,
+    };
+    PState {
+        nx: nx / r,
+        ny: ny / r,
+        acc,
+        ..*b
     }
 }
 
@@ -957,6 +1048,68 @@ mod tests {
             let r1 = 1.0 + z * r2;
             for (a, b) in [(p1, r1), (p2, r2), (p3, r3)] {
                 assert!((a - b).abs() <= 1e-13 * b.abs(), "z = {z}: {a} vs {b}");
+            }
+        }
+    }
+
+    /// `advance` from a fixed state over steps h that cross the thresholds
+    /// of its step kinds: a single RK4 step up to κ·h = 1.5 (the bound of
+    /// `rates`), ⌈κ·h/1.5⌉ RK4 sub-steps beyond, the quasi-steady step
+    /// blended in from κ·h = 16 to 18.
+    #[test]
+    fn advance_is_continuous_across_its_step_kinds() {
+        use super::{KAPPA_H, KAPPA_H_STIFF, MAX_SUB, PState, QS_BLEND, StripSums};
+        // k = 0.07, J = (0.11, 1.93, −25), the strip at Y = 0.3 (q2 ≈ −357):
+        // from s0 = 0.2, κ = (2/3)|v| grows from ≈ 41 along the step.
+        let st = Scaled::new(0.07, 0.11, 1.93, -25.0, 0.0).strip(0.3);
+        let (sn, cs) = 0.2f64.sin_cos();
+        let vy = st.b1 + st.q2 * st.c * sn;
+        let alpha = vy.atan2(st.a) - 0.05;
+        let p = PState {
+            sn,
+            cs,
+            nx: alpha.cos(),
+            ny: alpha.sin(),
+            acc: StripSums::default(),
+        };
+        let kh = |h: f64| {
+            let (s1, c1) = (0.2 + h).sin_cos();
+            st.rates::<true>(sn, cs, s1, c1, h).0
+        };
+        let go = |h: f64| {
+            let (s2, c2) = super::sin_cos_small(0.5 * h);
+            let q = st.advance::<true>(&p, h, c2, s2, f64::INFINITY, None);
+            [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
+        };
+        let qs = MAX_SUB as f64 * KAPPA_H;
+        let mut thresholds: Vec<f64> = (1..)
+            .map(|m| m as f64 * KAPPA_H_STIFF)
+            .take_while(|&x| x < qs)
+            .collect();
+        thresholds.extend([qs, QS_BLEND * qs]);
+        for target in thresholds {
+            // h where the bound κ·h reaches the threshold (bisection).
+            let (mut lo, mut hi) = (1e-4, 0.5);
+            assert!(kh(lo) < target && kh(hi) > target, "{target}");
+            for _ in 0..100 {
+                let mid = 0.5 * (lo + hi);
+                if kh(mid) < target { lo = mid } else { hi = mid }
+            }
+            // Six points 1e-8·h apart, the threshold between the third and
+            // the fourth: the difference across it must match those on
+            // either side to within the curvature (≈ 1e-16 here) and
+            // round-off. Equal sub-steps (⌈κ·h/2⌉ of them) and a switch to
+            // the quasi-steady step without the blend jumped by 4e-5…8e-3
+            // in the strip sums and n there (measured, docs/decisions/0082).
+            let d = 1e-8 * lo;
+            let v: Vec<[f64; 5]> = (0..6).map(|i| go(lo + (i as f64 - 2.5) * d)).collect();
+            for j in 0..5 {
+                let df: Vec<f64> = v.windows(2).map(|w| w[1][j] - w[0][j]).collect();
+                let across = df[2] - 0.5 * (df[1] + df[3]);
+                assert!(
+                    across.abs() < 1e-12,
+                    "κ·h = {target}, component {j}: {across:e} ({df:?})"
+                );
             }
         }
     }
