@@ -394,8 +394,8 @@ impl Accuracy {
 /// s-step [`Accuracy::s_step`], doubled on
 /// plastic segments that stay non-stiff (κ·h below the RK4 stability
 /// margin) at the doubled step; stiff segments on which the slip direction
-/// turns slowly take exponential steps of up to 0.4·√(tol/1e-3) instead
-/// (docs/decisions/0068).
+/// turns slowly take exponential steps of up to 0.8·√(tol/1e-3) ≤ 0.8
+/// instead (docs/decisions/0068 and 0049).
 pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, RheologyError> {
     inp.validate()?;
     let (j4, j5, j6) = match model {
