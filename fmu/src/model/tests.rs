@@ -14,6 +14,14 @@ fn out_index(r: u32) -> Option<usize> {
         .map(|s| s.index)
 }
 
+/// Value references of every Real output, in the order of the variable
+/// table (FX to TEMPERATURE_RISE, then J1 to J7).
+fn all_real_outputs() -> Vec<u32> {
+    (vr::FX..=vr::TEMPERATURE_RISE)
+        .chain(vr::J1..=vr::J7)
+        .collect()
+}
+
 struct Capture(Vec<(Status, String)>);
 impl Logger for Capture {
     fn log(&mut self, status: Status, _: &str, message: &str) {
@@ -146,9 +154,7 @@ fn report_fluid_through_start_up_warns_once_and_stays_finite() {
     f.enter_initialization_mode().unwrap();
     let mut log = Capture(Vec::new());
     f.exit_initialization_mode(&mut log).unwrap();
-    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
-        .chain(vr::J1..=vr::J7)
-        .collect();
+    let all = all_real_outputs();
     let mut o = vec![0.0; all.len()];
     for k in 0..200 {
         // Run up from rest with 1 % slip.
@@ -181,9 +187,7 @@ fn state_round_trip_is_bit_exact() {
     let back = TractionFmu::deserialize_state(&bytes).unwrap();
     assert_eq!(TractionFmu::serialize_state(&back), bytes);
     let mut o1 = [0.0; N_OUT];
-    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
-        .chain(vr::J1..=vr::J7)
-        .collect();
+    let all = all_real_outputs();
     f.do_step(0.1, 0.1, &mut NullLogger).unwrap();
     f.get_real(&all, &mut o1, &mut NullLogger).unwrap();
     f.set_real(&[vr::OMEGA1], &[1.0]).unwrap();
@@ -262,9 +266,7 @@ fn run(
     )?;
     f.enter_initialization_mode()?;
     f.exit_initialization_mode(&mut NullLogger)?;
-    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
-        .chain(vr::J1..=vr::J7)
-        .collect();
+    let all = all_real_outputs();
     let mut o = vec![0.0; all.len()];
     f.get_real(&all, &mut o, &mut NullLogger)?;
     Ok((f, o))
@@ -441,9 +443,7 @@ fn rheology_map_builds_its_cells_within_its_budget() {
         options(traction_contact::Model::ElasticPlastic),
     )
     .unwrap();
-    let all: Vec<u32> = (vr::FX..=vr::TEMPERATURE_RISE)
-        .chain(vr::J1..=vr::J7)
-        .collect();
+    let all = all_real_outputs();
     let steps = |f: &mut TractionFmu| -> Vec<Vec<f64>> {
         let mut outs = Vec::new();
         for i in 0..1000u32 {
