@@ -205,8 +205,17 @@ pub fn run_one(a: &[String]) -> Result<(), String> {
         "budget" => Some(Budget::DEFAULT),
         other => return Err(format!("`{other}`: expected direct, free or budget")),
     };
-    let mut maps: Vec<Map> = KS
-        .iter()
+    let mut maps = maps_of_ks(acc, budget);
+    for (i, p) in pts.iter().enumerate() {
+        maps[i % 4].evaluate(p).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+/// One empty map per aspect ratio of KS, with the given budget (none: a map
+/// that builds every cell it needs).
+fn maps_of_ks(acc: Accuracy, budget: Option<Budget>) -> Vec<Map> {
+    KS.iter()
         .map(|&k| {
             let m = Map::new(k, 0.0, 1.0, acc).unwrap();
             match budget {
@@ -214,17 +223,12 @@ pub fn run_one(a: &[String]) -> Result<(), String> {
                 None => m,
             }
         })
-        .collect();
-    for (i, p) in pts.iter().enumerate() {
-        maps[i % 4].evaluate(p).map_err(|e| e.to_string())?;
-    }
-    Ok(())
+        .collect()
 }
 
 /// The rheology-level sequence through maps without and with budget.
 fn rheology(n: usize, tol: f64) -> Result<(), String> {
     let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
-    let ks = KS;
     let pts = rheology_points(n);
     let t0 = Instant::now();
     for p in &pts {
@@ -232,16 +236,7 @@ fn rheology(n: usize, tol: f64) -> Result<(), String> {
     }
     let t_direct = t0.elapsed().as_secs_f64();
     for budget in [None, Some(Budget::DEFAULT)] {
-        let mut maps: Vec<Map> = ks
-            .iter()
-            .map(|&k| {
-                let m = Map::new(k, 0.0, 1.0, acc).unwrap();
-                match budget {
-                    Some(b) => m.with_budget(b),
-                    None => m,
-                }
-            })
-            .collect();
+        let mut maps = maps_of_ks(acc, budget);
         let t0 = Instant::now();
         for (i, p) in pts.iter().enumerate() {
             maps[i % 4].evaluate(p).unwrap();

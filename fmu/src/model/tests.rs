@@ -272,6 +272,13 @@ fn run(
     Ok((f, o))
 }
 
+/// traction-contact with the FMU's default bodies (steel, E = 207 GPa,
+/// ν = 0.3) and the user fluid, with options `o`.
+fn default_contact(o: traction_contact::Options) -> traction_contact::TractionContact {
+    let (b1, b2) = default_bodies(2.07e11, 0.3);
+    traction_contact::TractionContact::new(&b1, &b2, user_fluid(), o).unwrap()
+}
+
 /// traction-contact evaluated directly at the FMU's operating point
 /// (U, dU, dV, omega read back from the FMU's outputs).
 fn direct(c: &traction_contact::TractionContact, o: &[f64]) -> traction_contact::Evaluation {
@@ -334,9 +341,8 @@ fn options(model: traction_contact::Model) -> traction_contact::Options {
 fn viscoelastic_equals_traction_contact_and_infinite_deborah_is_elastic_plastic() {
     let (d, z0) = (0.5, 0.3);
     let (_, visco) = run(&[(vr::DEBORAH, d), (vr::Z0, z0)], &[(vr::RHEOLOGY, 3)], &[]).unwrap();
-    let (b1, b2) = default_bodies(2.07e11, 0.3);
     let model = traction_contact::Model::Viscoelastic { deborah: d, z0 };
-    let c = traction_contact::TractionContact::new(&b1, &b2, user_fluid(), options(model)).unwrap();
+    let c = default_contact(options(model));
     assert_matches(&visco, &direct(&c, &visco));
     // D = inf through fmi2SetReal: the elastic/plastic model.
     let (_, inf) = run(
@@ -347,13 +353,7 @@ fn viscoelastic_equals_traction_contact_and_infinite_deborah_is_elastic_plastic(
     .unwrap();
     let (_, ep) = run(&[], &[(vr::RHEOLOGY, 1)], &[]).unwrap();
     assert_eq!(inf, ep);
-    let c = traction_contact::TractionContact::new(
-        &b1,
-        &b2,
-        user_fluid(),
-        options(traction_contact::Model::ElasticPlastic),
-    )
-    .unwrap();
+    let c = default_contact(options(traction_contact::Model::ElasticPlastic));
     assert_matches(&ep, &direct(&c, &ep));
     // A finite D relaxes the stress: less traction than elastic/plastic.
     let fx = out_index(vr::FX).unwrap();
@@ -382,20 +382,13 @@ fn rheology_map_and_tolerance_parameters() {
     // rheology_tolerance
     // reaches the contact (1e-3: same as traction-contact at 1e-3); out
     // of [1e-6, 1e-2] it is refused with a message naming it.
-    let (b1, b2) = default_bodies(2.07e11, 0.3);
     let ep = traction_contact::Model::ElasticPlastic;
     let contact = |map: bool, tol: f64| {
-        traction_contact::TractionContact::new(
-            &b1,
-            &b2,
-            user_fluid(),
-            traction_contact::Options {
-                map,
-                accuracy: traction_contact::Accuracy::new(tol).unwrap(),
-                ..options(ep)
-            },
-        )
-        .unwrap()
+        default_contact(traction_contact::Options {
+            map,
+            accuracy: traction_contact::Accuracy::new(tol).unwrap(),
+            ..options(ep)
+        })
     };
     let (_, off) = run(&[], &[], &[]).unwrap();
     assert_matches(&off, &direct(&contact(false, 1e-4), &off));
@@ -435,14 +428,7 @@ fn rheology_map_builds_its_cells_within_its_budget() {
     // equal the direct values bit for bit but stay within 2·tol = 2e-4 of
     // them (both within tol of the converged solution). The same call
     // sequence on a second instance gives bit-identical outputs.
-    let (b1, b2) = default_bodies(2.07e11, 0.3);
-    let direct_contact = traction_contact::TractionContact::new(
-        &b1,
-        &b2,
-        user_fluid(),
-        options(traction_contact::Model::ElasticPlastic),
-    )
-    .unwrap();
+    let direct_contact = default_contact(options(traction_contact::Model::ElasticPlastic));
     let all = all_real_outputs();
     let steps = |f: &mut TractionFmu| -> Vec<Vec<f64>> {
         let mut outs = Vec::new();
@@ -543,34 +529,22 @@ fn thermal_parameter_equals_traction_contact() {
         mu_rise_scale: Some(300.0),
         ..traction_contact::Thermal::default()
     };
-    let c = traction_contact::TractionContact::new(
-        &b1,
-        &b2,
-        user_fluid(),
-        traction_contact::Options {
-            thermal: Some(thermal),
-            ..options(ep)
-        },
-    )
-    .unwrap();
+    let c = default_contact(traction_contact::Options {
+        thermal: Some(thermal),
+        ..options(ep)
+    });
     let d = direct(&c, &on);
     assert_matches(&on, &d);
     // The default T* = 1e6 K is the first-order law (mu_rise_scale None):
     // ΔT²/T*² < 1e-7 at this rise, so μ and the forces agree to 1e-6.
     let (_, first) = run(&reals[..4], &[], &[(vr::THERMAL, true)]).unwrap();
-    let c1 = traction_contact::TractionContact::new(
-        &b1,
-        &b2,
-        user_fluid(),
-        traction_contact::Options {
-            thermal: Some(traction_contact::Thermal {
-                mu_rise_scale: None,
-                ..thermal
-            }),
-            ..options(ep)
-        },
-    )
-    .unwrap();
+    let c1 = default_contact(traction_contact::Options {
+        thermal: Some(traction_contact::Thermal {
+            mu_rise_scale: None,
+            ..thermal
+        }),
+        ..options(ep)
+    });
     let d1 = direct(&c1, &first);
     let fy1 = first[out_index(vr::FY).unwrap()];
     assert!(
