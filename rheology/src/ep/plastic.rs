@@ -558,14 +558,15 @@ impl Strip {
         // needs the sub-division test of `advance`. Such non-stiff segments
         // may use the longer step `s_step_smooth`.
         let a_h = TURN_PER_STEP * s_step;
-        let steps = |st: f64| ((span / st).ceil() as usize).max(1);
+        let steps = |st: f64| ceil_count(span / st).max(1);
         let mut nsteps = steps(s_step_smooth);
         let mut h = span / nsteps as f64;
-        let ok = |h: f64| {
-            let (kh, ah) = self.rates::<ISO>(sn, cs, 1.0, 0.0, h);
-            kh * (1.0 + KAPPA_H_SLACK) <= KAPPA_H && ah <= a_h
-        };
-        let mut nonstiff = ok(h);
+        // The segment's bounds per unit step (`rates` over the segment is
+        // ∝ h: times h they equal it up to rounding, and changed none of
+        // the results or references of `cargo xtask ep-sets`).
+        let (kr, ar) = self.rates::<ISO>(sn, cs, 1.0, 0.0, 1.0);
+        let ok = |h: f64, margin: f64| kr * h * (1.0 + KAPPA_H_SLACK) <= margin && ar * h <= a_h;
+        let mut nonstiff = ok(h, KAPPA_H);
         // Stiff segments on which the slip direction turns slowly (far from
         // the spin pole's line vy = 0): exponential steps (`Strip::etd`),
         // which integrate the relaxation at the rate κ exactly for a frozen
@@ -586,7 +587,7 @@ impl Strip {
         if !nonstiff {
             nsteps = steps(s_step);
             h = span / nsteps as f64;
-            nonstiff = ok(h);
+            nonstiff = ok(h, KAPPA_H);
         }
         let (s2, c2) = sin_cos_small(0.5 * h);
         // sin/cos of the whole step (double angle).
@@ -797,7 +798,7 @@ impl Strip {
         if he_max < (ETD_MIN_STEP * s_step).min(span) {
             return None;
         }
-        let ne = ((span / he_max).ceil() as usize).max(1);
+        let ne = ceil_count(span / he_max).max(1);
         let he = span / ne as f64;
         (self.rates::<true>(sn, cs, 1.0, 0.0, he).1 <= TURN_PER_STEP * s_step).then_some((ne, he))
     }
@@ -935,6 +936,14 @@ impl Strip {
         }
         best
     }
+}
+
+/// ⌈t⌉ as a count for t ≥ 0 (`t.ceil() as usize`, which calls the
+/// library's ceil on the baseline x86-64 target; NaN gives 0 as there).
+#[inline(always)]
+fn ceil_count(t: f64) -> usize {
+    let n = t as usize;
+    if (n as f64) < t { n + 1 } else { n }
 }
 
 /// (1 − w)·a + w·b of two plastic states at the same s (b's), the direction
