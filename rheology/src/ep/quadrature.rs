@@ -262,13 +262,19 @@ fn initial_breaks(sc: &Scaled, tol: f64, out: &mut [f64; MAX_BREAKS]) -> usize {
 /// first: POLE_SECOND_EDGE at tol ≤ 1e-4, POLE_GRADING_GROWTH at tol ≥ 1e-3,
 /// linear in log10(tol) in between (docs/decisions/0086).
 fn second_edge(tol: f64) -> f64 {
+    POLE_GRADING_GROWTH + fine_tol(tol) * (POLE_SECOND_EDGE - POLE_GRADING_GROWTH)
+}
+
+/// Where the settings chosen for tol 1e-4 (docs/decisions/0086) take over
+/// from those of tol ≥ 1e-3: 0 at tol ≥ 1e-3, 1 at tol ≤ 1e-4, linear in
+/// log10(tol) in between.
+fn fine_tol(tol: f64) -> f64 {
     if tol >= 1e-3 {
-        POLE_GRADING_GROWTH
+        0.0
     } else if tol <= 1e-4 {
-        POLE_SECOND_EDGE
+        1.0
     } else {
-        let t = tol.log10() + 4.0;
-        POLE_SECOND_EDGE + t * (POLE_GRADING_GROWTH - POLE_SECOND_EDGE)
+        -3.0 - tol.log10()
     }
 }
 
@@ -399,6 +405,17 @@ fn max_abs_j(k: f64, dx: f64, d: &[f64; 4]) -> f64 {
 /// first edge at 8/|J3|); 0.25 takes 12–27 % more strips than 0.5.
 const ACCEPT_KINK: f64 = 0.5;
 
+/// ACCEPT_KINK for the refined panels (depth ≥ 1; the initial panels keep
+/// ACCEPT_KINK) at tol ≤ 1e-4 (moving with log tol up to 1e-3, where it is
+/// ACCEPT_KINK). On the 307 cases of `cargo xtask ep-sets` −2.6 %
+/// instructions at 1e-4, on a random batch (k 0.2–5, |J1|, |J2| ≤ 5,
+/// |J3| ≤ 26) −3.0 %; worst error/tol at 1e-4 over 62 seeds 0.45 (wide
+/// range, the s-steps'), of the batch against tol 1e-6 0.37. 1 instead:
+/// the batch's worst 0.51; 0.6: −1.1 % and −1.5 % (docs/decisions/0086).
+/// k = 0.163, J = (−0.231, −0.204, −0.895) at 1e-4: 0.022·tol (0.047·tol
+/// with 0.5).
+const ACCEPT_KINK_REFINED: f64 = 0.7;
+
 /// Largest Simpson–Lobatto difference of a half, in allowed changes, at
 /// which the pair check of [`lobatto_kronrod_in_phi`] may keep its Lobatto
 /// value (docs/decisions/0080).
@@ -434,7 +451,8 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 /// (∫Zx, ∫Zy, ∫Zy·X) and its flow topology (any number that changes where
 /// the strip sums have a kink in Y). Each panel is decided in two stages,
 /// each against the allowed change tol·width/π in J4, J5 and J6
-/// (ACCEPT_KINK times that where the panel's strips differ in topology):
+/// (ACCEPT_KINK times that where the panel's strips differ in topology;
+/// ACCEPT_KINK_REFINED on refined panels at tol ≤ 1e-4):
 ///
 /// 1. its 5-point Lobatto value is kept when it and the 3-point one
 ///    (Simpson, on the ends and the midpoint) differ by less than the
@@ -475,6 +493,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
     (k, dx): (f64, f64),
     mut strip: impl FnMut(f64) -> ([f64; 3], u32),
 ) -> (f64, f64, f64) {
+    let kink_refined = ACCEPT_KINK + fine_tol(tol) * (ACCEPT_KINK_REFINED - ACCEPT_KINK);
     // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx), and the topology.
     let mut f = |phi: f64| -> Node {
         let (y, cphi) = phi.sin_cos();
@@ -520,7 +539,11 @@ pub(crate) fn lobatto_kronrod_in_phi(
         let l5 = lobatto5(hw, &ends, &nodes);
         let mut d: [f64; 4] =
             std::array::from_fn(|i| l5[i] - hw * ((1.0 / 3.0) * ends[i] + (4.0 / 3.0) * fm.0[i]));
-        let share = if kink { ACCEPT_KINK } else { 1.0 };
+        let share = match (kink, depth) {
+            (false, _) => 1.0,
+            (true, 0) => ACCEPT_KINK,
+            (true, _) => kink_refined,
+        };
         let allowed = share * tol * (hi - lo) / PI;
         // The share of the panel that goes on to stage 2 (blended like a
         // refinement, whatever the depth); with a passed pair check it is
@@ -558,7 +581,11 @@ pub(crate) fn lobatto_kronrod_in_phi(
             kv[i] *= hw;
             d[i] = kv[i] - l5[i];
         }
-        let share = if kink { ACCEPT_KINK } else { 1.0 };
+        let share = match (kink, depth) {
+            (false, _) => 1.0,
+            (true, 0) => ACCEPT_KINK,
+            (true, _) => kink_refined,
+        };
         let allowed = share * tol * (hi - lo) / PI;
         let refine = refine_share(max_abs_j(k, dx, &d), allowed, depth, max_depth);
         if refine < 1.0 {
