@@ -62,9 +62,10 @@
 //! everywhere).
 //!
 //! Measured accuracy and cost: crate README, section "Viscoelastic model";
-//! what was tried instead: docs/decisions/0045 to 0048, 0076, 0077 and
-//! 0084. The former fixed-grid scheme is kept in [`reference`] as the
-//! tests' independent reference.
+//! what was tried instead: docs/decisions/0045 to 0048, 0076, 0077, 0084,
+//! 0087 (panel edges at located kinks) and 0088 (exponential and
+//! quasi-steady cap steps). The former fixed-grid scheme is kept in
+//! [`reference`] as the tests' independent reference.
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

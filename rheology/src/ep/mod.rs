@@ -16,7 +16,8 @@
 //!   anisotropic stiffness gy ≠ 1 the rate of `Strip::theta_rate`, and v is
 //!   then the elastic rate G·v throughout this module). Classical RK4 on
 //!   (n, ∫Zx dX, ∫Zy dX, ∫Zy X dX) (a segment whose largest κ·h stays below
-//!   the stability margin may use a longer step, see `solve_adaptive`);
+//!   the stability margin may use a longer step, see `solve_adaptive`, and
+//!   in [`Strip::integrate_etd`] 1.5 times that where κ·h ≤ 0.75 at it);
 //!   steps are sub-divided where the relaxation
 //!   rate (2/3)|v| makes RK4 unstable or inaccurate (κ·h > 2, within stiff
 //!   segments κ·h > 1.5; sub-steps whose lengths vary continuously with
