@@ -1209,7 +1209,7 @@ fn initial_breaks(p: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
         return 3;
     }
     let pp = yp.clamp(-1.0, 1.0).asin();
-    graded_breaks(pp, (POLE_GRADING / p.j3.abs()).max(W0_MIN), 2.0, out)
+    graded_breaks(pp, (POLE_GRADING / p.j3.abs()).max(W0_MIN), (2.0, 2.0), out)
 }
 
 /// Viscoelastic (J4, J5, J6) at the accuracy tol.
