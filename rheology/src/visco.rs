@@ -63,8 +63,9 @@
 //!
 //! Measured accuracy and cost: crate README, section "Viscoelastic model";
 //! what was tried instead: docs/decisions/0045 to 0048, 0076, 0077, 0084,
-//! 0087 (panel edges at located kinks) and 0088 (exponential and
-//! quasi-steady cap steps). The former fixed-grid scheme is kept in
+//! 0087 (panel edges at located kinks), 0088 (exponential and
+//! quasi-steady cap steps) and 0090 (step-size controllers). The former
+//! fixed-grid scheme is kept in
 //! [`reference`] as the tests' independent reference.
 
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -1208,7 +1209,7 @@ fn initial_breaks(p: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
         return 3;
     }
     let pp = yp.clamp(-1.0, 1.0).asin();
-    graded_breaks(pp, (POLE_GRADING / p.j3.abs()).max(W0_MIN), 2.0, out)
+    graded_breaks(pp, (POLE_GRADING / p.j3.abs()).max(W0_MIN), (2.0, 2.0), out)
 }
 
 /// Viscoelastic (J4, J5, J6) at the accuracy tol.

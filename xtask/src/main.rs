@@ -2,6 +2,8 @@
 //!
 //! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
 //! - `prof-visco CASE TOL REPS [old|gauss]`: the same for the viscoelastic benches;
+//! - `ep-batch FILE [N [TOL [REPS]]]`: per-row cost of a batch of
+//!   elastic/plastic evaluations (CSV `k,J1,J2,J3`);
 //! - `ep-sets refs|errs FILE [SEED]`, `ep-sets bits [TOL]`, `ep-sets lines
 //!   [SEED [TOL]]`, `ep-sets line K J1 J2 J3 D1 D2 D3 [TOL [N]]`: the
 //!   elastic/plastic solver against 128-panel references on 307 cases, its
@@ -16,6 +18,7 @@
 //! These are not user examples: they measure the implementation.
 #![forbid(unsafe_code)]
 
+mod ep_batch;
 mod ep_sets;
 mod map_budget;
 mod map_check;
@@ -30,6 +33,10 @@ commands:
                                   the same for the viscoelastic model: CASE m h x l e g
                                   (prof_visco.rs); `old` = the former fixed-grid scheme,
                                   `gauss` = the former Gauss-Legendre panel rule
+  ep-batch FILE [N [TOL [REPS]]]  per-row wall time (fastest of REPS, default 3) of the
+                                  first N rows (default 2000) of a CSV k,J1,J2,J3 at TOL
+                                  (default 1e-4), one thread; summary by |J3|/sqrt(k), k
+                                  and |Y_p| on stderr (ep_batch.rs)
   ep-sets refs FILE [SEED] | errs FILE [SEED] | bits [TOL] | lines [SEED [TOL]]
         | line K J1 J2 J3 D1 D2 D3 [TOL [N]]
                                   elastic/plastic solver on 307 cases (ep_sets.rs): write
@@ -54,6 +61,7 @@ commands:
 fn main() -> std::process::ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
+        Some("ep-batch") => ep_batch::run(&args[1..]),
         Some("ep-sets") => ep_sets::run(&args[1..]),
         Some("prof") => prof::run(&args[1..]),
         Some("prof-visco") => prof_visco::run(&args[1..]),

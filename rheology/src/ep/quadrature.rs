@@ -172,9 +172,10 @@ fn smooth_step(t: f64) -> f64 {
 }
 
 /// First graded panel edge from the spin pole's strip, in φ: POLE_GRADING/|J3|
-/// (the further edges at POLE_GRADING_GROWTH times the previous distance
-/// from it). With the former rule (4-point Gauss panels checked against
-/// their halves, distances doubling) 4, 8 and 16 gave a worst error/tol of
+/// (at tol ≤ 1e-4 the second at POLE_SECOND_EDGE times that distance from
+/// it, the further ones at POLE_GRADING_GROWTH times the previous distance).
+/// With the former rule (4-point Gauss panels checked against their halves,
+/// distances doubling) 4, 8 and 16 gave a worst error/tol of
 /// 0.48/0.48/0.50 on 224 cases and 0.35/0.33/0.47 on 600 high-spin ones at
 /// +17/+6/+3 % and +10/+8/+9 % instructions (8 was chosen). With the
 /// Lobatto–Kronrod panels of [`lobatto_kronrod_in_phi`], against 128-panel
@@ -191,10 +192,11 @@ const POLE_GRADING: f64 = 3.0;
 
 /// Growth of the initial panel edges' distance from the spin pole's strip
 /// beyond the first (POLE_GRADING/|J3|, the panel that holds the change of
-/// the flow pattern). The outer panels only need to be wide enough not to
-/// waste strips: the strip sums are smooth there and the adaptive rule
-/// halves them where not. Against 128-panel references on 307 high-spin
-/// cases (k ∈ {0.5, 1, 2, 5}, |J1|, |J2| ≤ 5, J3 ∈ [5, 26]), 157 wide ones
+/// the flow pattern; at tol ≤ 1e-4 beyond the second, POLE_SECOND_EDGE).
+/// The outer panels only need to be wide enough not to waste strips: the
+/// strip sums are smooth there and the adaptive rule halves them where not.
+/// Against 128-panel references on 307 high-spin cases (k ∈ {0.5, 1, 2, 5},
+/// |J1|, |J2| ≤ 5, J3 ∈ [5, 26]), 157 wide ones
 /// (k 0.05–20, |J3| to 316) and 67 (k ∈ {0.2 … 5}, J3 ∈ [0.5, 26]): the
 /// worst error/tol at tol = 1e-2, 1e-3, 1e-4 is the same for 2 (before),
 /// 4 and 8 on every set, while 4 takes 11–25 % fewer strips than 2 at
@@ -203,8 +205,23 @@ const POLE_GRADING: f64 = 3.0;
 /// Lobatto–Kronrod panels and POLE_GRADING = 3, growth 6 takes 10 % fewer
 /// strips at 1e-2 but 8 % more at 1e-4 (1842 cases), 3 more at 1e-2 and
 /// 1e-3 (first edge 4/|J3|); in instructions over 307 cases 6 and 8
-/// differ from 4 by −0.5 % and +2 % (docs/decisions/0074).
+/// differ from 4 by −0.5 % and +2 % (docs/decisions/0074); at 1e-4, 3 for
+/// every edge costs 1 % more than 4 and 3 % more than POLE_SECOND_EDGE with
+/// 4 beyond it (docs/decisions/0086).
 const POLE_GRADING_GROWTH: f64 = 4.0;
+
+/// Distance of the second initial panel edge from the spin pole's strip in
+/// units of the first (POLE_GRADING/|J3|) at tol ≤ 1e-4 (`second_edge`):
+/// where |J3|/√k is large the panel next to the pole's own holds flow-topology
+/// changes (kinks of the strip sums) that its refinements chase. 3 instead
+/// of POLE_GRADING_GROWTH (4) at 1e-4: instructions on 307 random cases
+/// −2.1 %, on a random batch (k 0.2–5, |J1|, |J2| ≤ 5, |J3| ≤ 26) −3.2 %,
+/// worst error/tol of the high-spin and other cases on four seeds of
+/// `cargo xtask ep-sets errs` 0.308 / 0.196 → 0.101 / 0.101; 2 and 2.5:
+/// +0.9 % and +0.8 % on the 307 cases. At 1e-3 and 1e-2 it costs the bench
+/// set's case s +31 % and +66 % (the 307 cases −2.6 % and +1.8 %), so the
+/// larger tolerances keep 4 (docs/decisions/0086).
+const POLE_SECOND_EDGE: f64 = 3.0;
 
 /// Largest number of initial panel edges: at most MAX_BREAKS/2 − 2 graded
 /// edges per side (they reach the contact's edge for any |J3| below
@@ -226,7 +243,7 @@ pub(crate) const MAX_BREAKS: usize = 64;
 /// J = (1.21, 0.016, 16.5) by 0.94·tol at 1e-3. The edges move continuously
 /// with the inputs; one appears or disappears only at the outermost panel,
 /// where the integrand is smooth and the change far below tol.
-fn initial_breaks(sc: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
+fn initial_breaks(sc: &Scaled, tol: f64, out: &mut [f64; MAX_BREAKS]) -> usize {
     let yp = sc.a0 / sc.j3;
     // J1 = J3 = 0 (the closed form unless gy ≠ 1): the two halves.
     if yp.is_nan() {
@@ -237,34 +254,62 @@ fn initial_breaks(sc: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
     // (small |J3|) this is one panel from edge to edge, whose first
     // refinement is the two halves (an empty panel at the edge is skipped).
     let pp = yp.clamp(-1.0, 1.0).asin();
-    graded_breaks(pp, POLE_GRADING / sc.j3.abs(), POLE_GRADING_GROWTH, out)
+    let grading = (second_edge(tol), POLE_GRADING_GROWTH);
+    graded_breaks(pp, POLE_GRADING / sc.j3.abs(), grading, out)
+}
+
+/// The second initial edge's distance from the pole's strip in units of the
+/// first: POLE_SECOND_EDGE at tol ≤ 1e-4, POLE_GRADING_GROWTH at tol ≥ 1e-3,
+/// linear in log10(tol) in between (docs/decisions/0086).
+fn second_edge(tol: f64) -> f64 {
+    POLE_GRADING_GROWTH + fine_tol(tol) * (POLE_SECOND_EDGE - POLE_GRADING_GROWTH)
+}
+
+/// Where the settings chosen for tol 1e-4 (docs/decisions/0086) take over
+/// from those of tol ≥ 1e-3: 0 at tol ≥ 1e-3, 1 at tol ≤ 1e-4, linear in
+/// log10(tol) in between.
+fn fine_tol(tol: f64) -> f64 {
+    if tol >= 1e-3 {
+        0.0
+    } else if tol <= 1e-4 {
+        1.0
+    } else {
+        -3.0 - tol.log10()
+    }
 }
 
 /// Panel edges in φ from −π/2 to π/2 graded geometrically about φ = `pp`
-/// (the spin pole's strip, clamped to the contact): edges at pp ± w0,
-/// pp ± w0·growth, pp ± w0·growth², … while a panel of at least half the last width is
+/// (the spin pole's strip, clamped to the contact): with `(second, growth)`,
+/// edges at pp ± w0, pp ± w0·second, pp ± w0·second·growth,
+/// pp ± w0·second·growth², … while a panel of at least half the last width is
 /// left to the contact's edge, at most MAX_BREAKS/2 − 2 per side. Returns the
 /// number of edges written to `out`.
-pub(crate) fn graded_breaks(pp: f64, w0: f64, growth: f64, out: &mut [f64; MAX_BREAKS]) -> usize {
+pub(crate) fn graded_breaks(
+    pp: f64,
+    w0: f64,
+    (second, growth): (f64, f64),
+    out: &mut [f64; MAX_BREAKS],
+) -> usize {
     let side = MAX_BREAKS / 2 - 2;
     // Below the pole (filled from the pole outwards, then reversed).
     let mut n = 1;
     let mut w = w0;
     while pp - w > -FRAC_PI_2 + 0.5 * w && n <= side {
         out[n] = pp - w;
+        w *= if n == 1 { second } else { growth };
         n += 1;
-        w *= growth;
     }
     out[1..n].reverse();
     out[0] = -FRAC_PI_2;
     out[n] = pp;
     n += 1;
     let mut w = w0;
+    let first = n;
     let lim = n + side;
     while pp + w < FRAC_PI_2 - 0.5 * w && n < lim {
         out[n] = pp + w;
+        w *= if n == first { second } else { growth };
         n += 1;
-        w *= growth;
     }
     out[n] = FRAC_PI_2;
     n + 1
@@ -294,7 +339,7 @@ pub(crate) fn solve_adaptive(
     s_step_smooth: f64,
 ) -> (f64, f64, f64) {
     let mut breaks = [0.0; MAX_BREAKS];
-    let nb = initial_breaks(sc, &mut breaks);
+    let nb = initial_breaks(sc, tol, &mut breaks);
     let etd_step = (ETD_STEP * (tol / 1e-3).sqrt()).min(ETD_STEP_MAX);
     // None shorter than ETD_MIN_STEP s-steps (below tol ≈ 1e-5).
     let etd_step = if etd_step >= ETD_MIN_STEP * s_step {
@@ -360,6 +405,17 @@ fn max_abs_j(k: f64, dx: f64, d: &[f64; 4]) -> f64 {
 /// first edge at 8/|J3|); 0.25 takes 12–27 % more strips than 0.5.
 const ACCEPT_KINK: f64 = 0.5;
 
+/// ACCEPT_KINK for the refined panels (depth ≥ 1; the initial panels keep
+/// ACCEPT_KINK) at tol ≤ 1e-4 (moving with log tol up to 1e-3, where it is
+/// ACCEPT_KINK). On the 307 cases of `cargo xtask ep-sets` −2.6 %
+/// instructions at 1e-4, on a random batch (k 0.2–5, |J1|, |J2| ≤ 5,
+/// |J3| ≤ 26) −3.0 %; worst error/tol at 1e-4 over 62 seeds 0.45 (wide
+/// range, the s-steps'), of the batch against tol 1e-6 0.37. 1 instead:
+/// the batch's worst 0.51; 0.6: −1.1 % and −1.5 % (docs/decisions/0086).
+/// k = 0.163, J = (−0.231, −0.204, −0.895) at 1e-4: 0.022·tol (0.047·tol
+/// with 0.5).
+const ACCEPT_KINK_REFINED: f64 = 0.7;
+
 /// Largest Simpson–Lobatto difference of a half, in allowed changes, at
 /// which the pair check of [`lobatto_kronrod_in_phi`] may keep its Lobatto
 /// value (docs/decisions/0080).
@@ -395,7 +451,8 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 /// (∫Zx, ∫Zy, ∫Zy·X) and its flow topology (any number that changes where
 /// the strip sums have a kink in Y). Each panel is decided in two stages,
 /// each against the allowed change tol·width/π in J4, J5 and J6
-/// (ACCEPT_KINK times that where the panel's strips differ in topology):
+/// (ACCEPT_KINK times that where the panel's strips differ in topology;
+/// ACCEPT_KINK_REFINED on refined panels at tol ≤ 1e-4):
 ///
 /// 1. its 5-point Lobatto value is kept when it and the 3-point one
 ///    (Simpson, on the ends and the midpoint) differ by less than the
@@ -436,6 +493,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
     (k, dx): (f64, f64),
     mut strip: impl FnMut(f64) -> ([f64; 3], u32),
 ) -> (f64, f64, f64) {
+    let kink_refined = ACCEPT_KINK + fine_tol(tol) * (ACCEPT_KINK_REFINED - ACCEPT_KINK);
     // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx), and the topology.
     let mut f = |phi: f64| -> Node {
         let (y, cphi) = phi.sin_cos();
@@ -481,7 +539,11 @@ pub(crate) fn lobatto_kronrod_in_phi(
         let l5 = lobatto5(hw, &ends, &nodes);
         let mut d: [f64; 4] =
             std::array::from_fn(|i| l5[i] - hw * ((1.0 / 3.0) * ends[i] + (4.0 / 3.0) * fm.0[i]));
-        let share = if kink { ACCEPT_KINK } else { 1.0 };
+        let share = match (kink, depth) {
+            (false, _) => 1.0,
+            (true, 0) => ACCEPT_KINK,
+            (true, _) => kink_refined,
+        };
         let allowed = share * tol * (hi - lo) / PI;
         // The share of the panel that goes on to stage 2 (blended like a
         // refinement, whatever the depth); with a passed pair check it is
@@ -519,7 +581,11 @@ pub(crate) fn lobatto_kronrod_in_phi(
             kv[i] *= hw;
             d[i] = kv[i] - l5[i];
         }
-        let share = if kink { ACCEPT_KINK } else { 1.0 };
+        let share = match (kink, depth) {
+            (false, _) => 1.0,
+            (true, 0) => ACCEPT_KINK,
+            (true, _) => kink_refined,
+        };
         let allowed = share * tol * (hi - lo) / PI;
         let refine = refine_share(max_abs_j(k, dx, &d), allowed, depth, max_depth);
         if refine < 1.0 {
