@@ -1,6 +1,6 @@
 //! Per-row cost of a batch of elastic/plastic evaluations:
 //! `ep-batch FILE [N [TOL [REPS]]]` evaluates the first N rows (default
-//! 2000) of a CSV with columns `k,J1,J2,J3` (the header line skipped) at
+//! 2000) of a CSV with columns `k,J1,J2,J3` (by name; `traction jt`'s input) at
 //! TOL (default 1e-4, `evaluate`'s default), one thread, and prints each
 //! row's wall time in µs (the fastest of REPS evaluations, default 3) as
 //! CSV on stdout; on stderr a summary: mean, percentiles, the share of the
@@ -12,6 +12,7 @@
 use crate::arg;
 use std::time::Instant;
 use traction_rheology::{Accuracy, Inputs, Model, evaluate};
+use traction_testkit::Table;
 
 /// Runs the driver with the command line's arguments after `ep-batch`.
 pub fn run(a: &[String]) -> Result<(), String> {
@@ -21,18 +22,23 @@ pub fn run(a: &[String]) -> Result<(), String> {
     let reps: usize = arg(a, 3, "REPS", Some(3))?;
     let text = std::fs::read_to_string(file).map_err(|e| format!("{file}: {e}"))?;
     let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
+    let table = Table::parse(&text);
     // (k, J1, J2, J3, µs)
     let mut rows: Vec<[f64; 5]> = Vec::with_capacity(n);
+    let cols = ["k", "J1", "J2", "J3"];
+    if let Some(c) = cols.iter().find(|c| !table.header.iter().any(|h| h == *c)) {
+        return Err(format!("{file}: no column `{c}` (needs k,J1,J2,J3)"));
+    }
     println!("k,J1,J2,J3,us");
-    for (i, line) in text.lines().skip(1).take(n).enumerate() {
-        let v: Vec<f64> = line
-            .split(',')
-            .take(4)
-            .map(|t| t.trim().parse::<f64>())
-            .collect::<Result<_, _>>()
-            .map_err(|e| format!("{file} row {}: {e}", i + 1))?;
-        if v.len() < 4 {
-            return Err(format!("{file} row {}: needs k,J1,J2,J3", i + 1));
+    for i in 0..table.rows.len().min(n) {
+        let mut v = [0.0; 4];
+        for (x, c) in v.iter_mut().zip(cols) {
+            let cell = table.rows[i]
+                .get(table.column(c))
+                .map_or("", String::as_str);
+            *x = cell
+                .parse()
+                .map_err(|_| format!("{file} row {}: `{cell}` in column {c}", i + 1))?;
         }
         let inp = Inputs::new(v[0], v[1], v[2], v[3]).map_err(|e| e.to_string())?;
         let mut best = f64::INFINITY;

@@ -63,6 +63,15 @@ pub(crate) use quadrature::{
 /// < 4e-6·c², so the effect on J4..J6 is below 1e-5 (isotropic: no effect).
 pub(super) const CS_MIN: f64 = 0.02;
 
+/// 0 for t ≤ 0, 1 for t ≥ 1, C¹ cubic in between: the blend of every
+/// discrete choice of the strips and panels (outputs continuous in the
+/// inputs).
+#[inline]
+pub(super) fn smooth_step(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
 /// Largest number of elastic ↔ plastic switches per strip.
 const MAX_SWITCH: usize = 16;
 

@@ -5,7 +5,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use super::{CS_MIN, Event, PState, PlasticEnd, Strip, StripSums};
+use super::{CS_MIN, Event, PState, PlasticEnd, Strip, StripSums, smooth_step};
 
 /// (sin x, cos x) of a (half) step angle: Taylor polynomials for |x| ≤ 1/2,
 /// whose truncation error (< x¹⁷/17! ≈ 2e-20 for sin, x¹⁸/18! for cos) is
@@ -477,7 +477,7 @@ impl Strip {
             return qs;
         }
         let rk = self.sub_steps::<ISO>(p, (h, c2, s2), mr);
-        blend(&rk, &qs, t * t * (3.0 - 2.0 * t))
+        blend(&rk, &qs, smooth_step(t))
     }
 
     /// `p` advanced by h in RK4 sub-steps where the step needs mr > 1 of
@@ -685,8 +685,7 @@ impl Strip {
                     let (b0, b1) = TURN_EXACT_BLEND;
                     let x = kh * (hx / hv);
                     if hx > hb && x < b1 {
-                        let t = ((x - b0) / (b1 - b0)).max(0.0);
-                        let w = 1.0 - t * t * (3.0 - 2.0 * t);
+                        let w = 1.0 - smooth_step((x - b0) / (b1 - b0));
                         hv = hb + w * (hx - hb);
                         a_h_step = a_h / (1.0 - w);
                     } else {

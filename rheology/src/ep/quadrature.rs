@@ -3,7 +3,7 @@
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use super::{ETD_MIN_STEP, Resolution, Scaled, Strip, StripSums};
+use super::{ETD_MIN_STEP, Resolution, Scaled, Strip, StripSums, smooth_step};
 use crate::quad;
 
 /// Composite Gauss–Legendre over Y = sin φ of a strip functional; returns
@@ -162,13 +162,6 @@ pub(crate) fn refine_share(err: f64, allowed: f64, depth: u32, max_depth: u32) -
     } else {
         smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
     }
-}
-
-/// 0 for t ≤ 0, 1 for t ≥ 1, C¹ cubic in between.
-#[inline]
-fn smooth_step(t: f64) -> f64 {
-    let t = t.clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
 }
 
 /// First graded panel edge from the spin pole's strip, in φ: POLE_GRADING/|J3|
@@ -539,12 +532,16 @@ pub(crate) fn lobatto_kronrod_in_phi(
         let l5 = lobatto5(hw, &ends, &nodes);
         let mut d: [f64; 4] =
             std::array::from_fn(|i| l5[i] - hw * ((1.0 / 3.0) * ends[i] + (4.0 / 3.0) * fm.0[i]));
-        let share = match (kink, depth) {
-            (false, _) => 1.0,
-            (true, 0) => ACCEPT_KINK,
-            (true, _) => kink_refined,
+        // The change allowed in this panel, with or without a kink.
+        let allowed_with = |kink: bool| {
+            let share = match (kink, depth) {
+                (false, _) => 1.0,
+                (true, 0) => ACCEPT_KINK,
+                (true, _) => kink_refined,
+            };
+            share * tol * (hi - lo) / PI
         };
-        let allowed = share * tol * (hi - lo) / PI;
+        let allowed = allowed_with(kink);
         // The share of the panel that goes on to stage 2 (blended like a
         // refinement, whatever the depth); with a passed pair check it is
         // that of the wider stage 1.
@@ -581,12 +578,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
             kv[i] *= hw;
             d[i] = kv[i] - l5[i];
         }
-        let share = match (kink, depth) {
-            (false, _) => 1.0,
-            (true, 0) => ACCEPT_KINK,
-            (true, _) => kink_refined,
-        };
-        let allowed = share * tol * (hi - lo) / PI;
+        let allowed = allowed_with(kink);
         let refine = refine_share(max_abs_j(k, dx, &d), allowed, depth, max_depth);
         if refine < 1.0 {
             let w = weight * (1.0 - refine);
