@@ -18,9 +18,9 @@
 //!   (n, ∫Zx dX, ∫Zy dX, ∫Zy X dX) (a segment whose largest κ·h stays below
 //!   the stability margin may use a longer step, see `solve_adaptive`, and
 //!   in [`Strip::integrate_etd`] 1.5 times that where κ·h ≤ 0.75 at it;
-//!   there a segment stiff for RK4 at the longer step but with κ·h ≤ 2.8
-//!   and no exponential steps takes equal steps of that length of
-//!   Butcher's six-stage fifth-order rule instead, `Strip::rk5`);
+//!   there a segment stiff for RK4 with no exponential steps takes equal
+//!   steps of Butcher's six-stage fifth-order rule, `Strip::rk5`, of the
+//!   longer step or else of the s-step where κ·h ≤ 2.8 at them);
 //!   steps are sub-divided where the relaxation
 //!   rate (2/3)|v| makes RK4 unstable or inaccurate (κ·h > 2, within stiff
 //!   segments κ·h > 1.5; sub-steps whose lengths vary continuously with

@@ -135,16 +135,17 @@ const LONG_FACTOR: f64 = 1.5;
 /// it unchanged; 0.75 keeps a margin for ≤ 1 % fewer instructions.
 const KAPPA_H_LONG: f64 = 0.75;
 
-/// κ·h bound at the longer s-step up to which a segment that is stiff for
-/// RK4 there (κ·h > KAPPA_H) and takes no exponential steps is taken in
-/// equal steps of the fifth-order rule (`Strip::rk5`, real stability
-/// interval 3.39) of that length instead of RK4 at the s-step with the
-/// graded start, in `evaluate` only (docs/decisions/0091: at tol 1e-3 cases
-/// a, h −4.0/−2.1 %, 307 cases −1.1 % at 1e-3 and −0.7 % at 1e-4, worst
-/// error/tol of `cargo xtask ep-sets` on 62 seeds unchanged except 0.241 →
-/// 0.271 at 1e-4 (others); 2.4 and 3.0–3.2 measured alike, 2.8 keeps a
-/// margin below the stability limit). The fixed-resolution reference
-/// (`Strip::integrate`) does not use it.
+/// κ·h bound up to which a segment that is stiff for RK4 (κ·h > KAPPA_H)
+/// and takes no exponential steps is taken in equal steps of the
+/// fifth-order rule (`Strip::rk5`, real stability interval 3.39): at the
+/// longer s-step where it holds there, else at the s-step where it holds
+/// there, instead of RK4 at the s-step with the graded start; in
+/// `evaluate` only (docs/decisions/0091: at tol 1e-3 cases a, h −4.2 /
+/// −1.9 %, at 1e-2 h, s, a −20 / −14 / −8.5 %, 307 cases −5.4 / −2.9 /
+/// −1.9 % at 1e-2 / 1e-3 / 1e-4, worst error/tol of `cargo xtask ep-sets`
+/// on 62 seeds unchanged except 0.241 → 0.271 at 1e-4 (others); 2.4 and
+/// 3.0–3.2 measured alike, 2.8 keeps a margin below the stability limit).
+/// The fixed-resolution reference (`Strip::integrate`) does not use it.
 const RK5_KAPPA_H_STIFF: f64 = 2.8;
 
 /// RK4 margin on κ·h of the steps that `Strip::advance` takes whole on
@@ -719,7 +720,8 @@ impl Strip {
         // KAPPA_H) and take no exponential steps, where κ·h ≤
         // RK5_KAPPA_H_STIFF there: equal steps of the fifth-order rule
         // (`Strip::rk5`) at that step, instead of RK4 at the s-step with the
-        // graded start and the sub-division test per step.
+        // graded start and the sub-division test per step; where they are
+        // stiff for RK4 at the s-step too, the same at the s-step.
         if !nonstiff && etd_step > 0.0 && ok(h, RK5_KAPPA_H_STIFF) {
             let steps = (s_step, nsteps, h);
             return self.plastic_rk5::<ISO>(sn, cs, n, acc, allow_unload, steps, rec);
@@ -728,6 +730,10 @@ impl Strip {
             nsteps = steps(s_step);
             h = span / nsteps as f64;
             nonstiff = ok(h, KAPPA_H);
+            if !nonstiff && etd_step > 0.0 && ok(h, RK5_KAPPA_H_STIFF) {
+                let steps = (s_step, nsteps, h);
+                return self.plastic_rk5::<ISO>(sn, cs, n, acc, allow_unload, steps, rec);
+            }
         }
         let (s2, c2) = sin_cos_small(0.5 * h);
         // sin/cos of the whole step (double angle).
@@ -1493,6 +1499,50 @@ mod tests {
             assert_eq!((states, segments), (nsteps as usize + 1, 0), "Y = {y}");
             let err = dist(&e, &st.integrate(0.0005, 0.0005));
             assert!(err < 1e-4, "Y = {y}: {err:e}");
+        }
+    }
+
+    #[test]
+    fn fifth_order_steps_at_the_s_step_on_stiffer_segments() {
+        // Case h of the bench set (k = 5, J = (0, 3.37, 25.8)) at the steps
+        // of tol = 1e-2 (s-step 0.178, longer step 0.356, exponential step
+        // 0.8): on strips with |Y| ≈ 0.65…0.9 the plastic segment (span
+        // ≈ 3) has κ·h 3.9–5.3 at the longer step and 2.05–2.8 at the
+        // s-step, and no exponential steps (the slip direction turns too
+        // fast), so it takes 17 equal fifth-order steps of the s-step: one
+        // plastic state per step. Reference: RK4 at h = 0.0005. Measured
+        // strip errors 1.4e-7…4.8e-7 at Y = −0.9, −0.7, 0.8; the bound 1e-3
+        // is tol/10.
+        use super::{KAPPA_H, RK5_KAPPA_H_STIFF};
+        let s_step = 0.1 * 10f64.powf(0.25);
+        let sc = Scaled::new(5.0, 0.0, 3.368, 25.816, 0.0);
+        for y in [-0.9, -0.7, 0.8] {
+            let st = sc.strip(y);
+            let (mut states, mut segments) = (0, 0);
+            let steps = (s_step, 2.0 * s_step, 0.8, true);
+            let (e, _) = st.integrate_with(steps, &mut |ev| match ev {
+                super::Event::Plastic { .. } if segments == 0 => states += 1,
+                super::Event::Elastic { .. } if states > 0 => segments += 1,
+                _ => {}
+            });
+            let (sn, _) = first_yield(&st);
+            let span = std::f64::consts::FRAC_PI_2 - sn.asin();
+            let kr = st
+                .rates::<true>(sn, (1.0 - sn * sn).sqrt(), 1.0, 0.0, 1.0)
+                .0;
+            let (n1, n2) = ((span / s_step).ceil(), (span / (2.0 * s_step)).ceil());
+            let (kh1, kh2) = (kr * span / n1, kr * span / n2);
+            assert!(
+                kh2 > RK5_KAPPA_H_STIFF,
+                "Y = {y}: κ·h = {kh2} at the longer step"
+            );
+            assert!(
+                kh1 > KAPPA_H && kh1 <= RK5_KAPPA_H_STIFF,
+                "Y = {y}: κ·h = {kh1}"
+            );
+            assert_eq!((states, segments), (n1 as usize + 1, 0), "Y = {y}");
+            let err = dist(&e, &st.integrate(0.0005, 0.0005));
+            assert!(err < 1e-3, "Y = {y}: {err:e}");
         }
     }
 
