@@ -1,0 +1,95 @@
+//! The result of a call on the safe side of an FMU, and where an instance
+//! sends its warnings. The C boundary ([`crate::ffi`]) turns a [`Status`]
+//! into an `fmi2Status` and an [`FmuError`] into a logged message.
+
+/// Status of a call, mirroring `fmi2Status` (ordered by severity).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Status {
+    /// fmi2OK.
+    Ok = 0,
+    /// fmi2Warning.
+    Warning = 1,
+    /// fmi2Discard.
+    Discard = 2,
+    /// fmi2Error.
+    Error = 3,
+    /// fmi2Fatal.
+    Fatal = 4,
+}
+
+impl Status {
+    /// The log category of a failure or warning of this status:
+    /// `logStatusFatal`, `logStatusWarning`, else `logStatusError`.
+    pub fn category(self) -> &'static str {
+        match self {
+            Status::Fatal => "logStatusFatal",
+            Status::Warning => "logStatusWarning",
+            _ => "logStatusError",
+        }
+    }
+}
+
+/// A failed call: status (Error or Fatal) and the message to log.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
+pub struct FmuError {
+    /// fmi2Error or fmi2Fatal.
+    pub status: Status,
+    /// What went wrong, naming the function, variable or quantity.
+    pub message: String,
+}
+
+impl FmuError {
+    /// An fmi2Error with a message.
+    pub fn error(message: impl Into<String>) -> Self {
+        Self {
+            status: Status::Error,
+            message: message.into(),
+        }
+    }
+}
+
+/// Result of a model call: `Ok(Status::Ok | Status::Warning)` or an error.
+pub type FmuResult = Result<Status, FmuError>;
+
+/// Where a model sends warnings (the host's logger behind the C boundary).
+pub trait Logger {
+    /// Logs one message under an FMI log category.
+    fn log(&mut self, status: Status, category: &str, message: &str);
+}
+
+/// A logger that drops everything (tests, benches).
+#[derive(Debug, Default, Clone, Copy)]
+pub struct NullLogger;
+
+impl Logger for NullLogger {
+    fn log(&mut self, _: Status, _: &str, _: &str) {}
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn status_codes_and_order_are_fmi2s() {
+        // fmi2Status: fmi2OK = 0 ... fmi2Fatal = 4 (FMI 2.0.x, fmi2FunctionTypes.h).
+        let codes = [
+            Status::Ok,
+            Status::Warning,
+            Status::Discard,
+            Status::Error,
+            Status::Fatal,
+        ]
+        .map(|s| s as i32);
+        assert_eq!(codes, [0, 1, 2, 3, 4]);
+        assert!(Status::Warning < Status::Error && Status::Error < Status::Fatal);
+        assert_eq!(Status::Fatal.category(), "logStatusFatal");
+        assert_eq!(Status::Warning.category(), "logStatusWarning");
+        assert_eq!(Status::Error.category(), "logStatusError");
+        let e = FmuError::error("x out of range");
+        assert_eq!(
+            (e.status, e.to_string()),
+            (Status::Error, "x out of range".into())
+        );
+    }
+}
