@@ -111,7 +111,11 @@ pub fn run(args: FmuArgs) -> Result<(), CliError> {
                 libraries.iter().map(|(p, l)| (*p, l.as_path())).collect();
             traction_fmu::package::write_fmu_for(&binaries, &b.out).map_err(CliError::model)?;
             for (platform, library) in &libraries {
-                eprintln!("packed {} ({})", platform.archive_path(), library.display());
+                eprintln!(
+                    "packed {} ({})",
+                    platform.archive_path(traction_fmu::model_description::MODEL_IDENTIFIER),
+                    library.display()
+                );
             }
             eprintln!("wrote {}", b.out.display());
             Ok(())
@@ -131,7 +135,7 @@ const MINGW_LINKER: &str = "x86_64-w64-mingw32-gcc";
 
 fn build_library(platform: Platform) -> Result<PathBuf, CliError> {
     let root = workspace_root();
-    let file = platform.cargo_library_name();
+    let file = platform.cargo_library_name(traction_fmu::package::LIBRARY_NAME);
     let target_args = platform
         .rust_target()
         .map(|t| format!(" --target {t}"))
@@ -197,7 +201,7 @@ fn build_library(platform: Platform) -> Result<PathBuf, CliError> {
         )));
     }
     let stdout = String::from_utf8_lossy(&output.stdout);
-    artifact_path(&stdout, file)
+    artifact_path(&stdout, &file)
         .ok_or_else(|| CliError::Usage(format!("cargo did not report {file}; {hint}")))
 }
 
