@@ -15,57 +15,7 @@ use crate::variables::{
     self, Causality, Kind, N_INPUTS, N_REAL_OUTPUTS, N_REAL_PARAMS, VARIABLES, vr,
 };
 
-/// FMI 2 status, ordered by severity.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Status {
-    /// fmi2OK.
-    Ok = 0,
-    /// fmi2Warning.
-    Warning = 1,
-    /// fmi2Discard.
-    Discard = 2,
-    /// fmi2Error.
-    Error = 3,
-    /// fmi2Fatal.
-    Fatal = 4,
-}
-
-/// A failed call: its status and a message for the host's logger.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{message}")]
-pub struct FmuError {
-    /// fmi2Error or fmi2Fatal.
-    pub status: Status,
-    /// What went wrong, naming the variable or quantity.
-    pub message: String,
-}
-
-impl FmuError {
-    /// An fmi2Error with this message.
-    pub fn error(message: impl Into<String>) -> Self {
-        FmuError {
-            status: Status::Error,
-            message: message.into(),
-        }
-    }
-}
-
-/// Result of an FMI call: the status of a success (Ok or Warning) or the error.
-pub type FmuResult = Result<Status, FmuError>;
-
-/// Where an instance sends warnings.
-pub trait Logger {
-    /// Log a message of the given status and category.
-    fn log(&mut self, status: Status, category: &str, message: &str);
-}
-
-/// A logger that drops everything.
-#[derive(Debug, Default, Clone, Copy)]
-pub struct NullLogger;
-
-impl Logger for NullLogger {
-    fn log(&mut self, _: Status, _: &str, _: &str) {}
-}
+pub use traction_fmi_support::{FmuError, FmuResult, Logger, NullLogger, Status};
 
 /// State of the FMI 2 co-simulation state machine.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
