@@ -5,7 +5,8 @@
 //! It holds what is the same in both by meaning, not only by shape:
 //! * [`status`] — the safe side's call result: [`Status`] (mirroring
 //!   `fmi2Status`), [`FmuError`], [`FmuResult`] and the [`Logger`] an
-//!   instance sends warnings to.
+//!   instance sends warnings to; the FMI 2 co-simulation states [`Mode`]
+//!   with the check of which calls each allows.
 //! * [`ffi`] — the hand-written FMI 2 C types and constants and the guards
 //!   every exported function uses: pointer-to-slice and string checks, the
 //!   tagged boxes behind `fmi2Component` and `fmi2FMUstate`, `catch_unwind`
@@ -34,4 +35,4 @@ pub mod package;
 pub mod status;
 pub mod xml;
 
-pub use status::{FmuError, FmuResult, Logger, NullLogger, Status};
+pub use status::{FmuError, FmuResult, Logger, Mode, NullLogger, Status};

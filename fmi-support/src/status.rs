@@ -1,6 +1,7 @@
-//! The result of a call on the safe side of an FMU, and where an instance
-//! sends its warnings. The C boundary ([`crate::ffi`]) turns a [`Status`]
-//! into an `fmi2Status` and an [`FmuError`] into a logged message.
+//! The result of a call on the safe side of an FMU, where an instance sends
+//! its warnings, and the states of the FMI 2 co-simulation state machine.
+//! The C boundary ([`crate::ffi`]) turns a [`Status`] into an `fmi2Status`
+//! and an [`FmuError`] into a logged message.
 
 /// Status of a call, mirroring `fmi2Status` (ordered by severity).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -64,6 +65,63 @@ pub struct NullLogger;
 
 impl Logger for NullLogger {
     fn log(&mut self, _: Status, _: &str, _: &str) {}
+}
+
+/// States of the FMI 2 co-simulation state machine.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// After fmi2Instantiate or fmi2Reset.
+    Instantiated = 0,
+    /// Between fmi2EnterInitializationMode and fmi2ExitInitializationMode.
+    Initialization = 1,
+    /// Initialized; steps may be taken.
+    StepComplete = 2,
+    /// After fmi2Terminate.
+    Terminated = 3,
+    /// After a call returned fmi2Error.
+    Error = 4,
+    /// After a call returned fmi2Fatal: only fmi2FreeInstance remains.
+    Fatal = 5,
+}
+
+impl Mode {
+    /// The mode of a code (`mode as u8`); `None` for any other byte. Which
+    /// modes a saved FMU state may hold is each FMU's own rule.
+    pub fn from_code(c: u8) -> Option<Self> {
+        Some(match c {
+            0 => Mode::Instantiated,
+            1 => Mode::Initialization,
+            2 => Mode::StepComplete,
+            3 => Mode::Terminated,
+            4 => Mode::Error,
+            5 => Mode::Fatal,
+            _ => return None,
+        })
+    }
+
+    /// Whether the call `func` is allowed in this mode: `Ok` when the mode
+    /// is one of `allowed`; in the fatal mode an fmi2Fatal error (only
+    /// fmi2FreeInstance remains), else an fmi2Error naming the mode and the
+    /// allowed ones. The caller enters its error state with the error.
+    ///
+    /// # Errors
+    /// As above.
+    pub fn check(self, func: &str, allowed: &[Mode]) -> Result<(), FmuError> {
+        if allowed.contains(&self) {
+            Ok(())
+        } else if self == Mode::Fatal {
+            Err(FmuError {
+                status: Status::Fatal,
+                message: format!(
+                    "{func}: the instance had a fatal error; only fmi2FreeInstance is allowed"
+                ),
+            })
+        } else {
+            Err(FmuError::error(format!(
+                "{func}: not allowed in state {self:?} (allowed: {allowed:?})"
+            )))
+        }
+    }
 }
 
 #[cfg(test)]

@@ -15,37 +15,7 @@ use crate::variables::{
     self, Causality, Kind, N_INPUTS, N_REAL_OUTPUTS, N_REAL_PARAMS, VARIABLES, vr,
 };
 
-pub use traction_fmi_support::{FmuError, FmuResult, Logger, NullLogger, Status};
-
-/// State of the FMI 2 co-simulation state machine.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Mode {
-    /// After fmi2Instantiate (or fmi2Reset).
-    Instantiated = 0,
-    /// Between fmi2EnterInitializationMode and fmi2ExitInitializationMode.
-    Initialization = 1,
-    /// Stepping.
-    StepComplete = 2,
-    /// After fmi2Terminate.
-    Terminated = 3,
-    /// After an fmi2Error.
-    Error = 4,
-    /// After an fmi2Fatal: only fmi2FreeInstance remains.
-    Fatal = 5,
-}
-
-impl Mode {
-    fn from_code(c: u8) -> Option<Self> {
-        Some(match c {
-            0 => Mode::Instantiated,
-            1 => Mode::Initialization,
-            2 => Mode::StepComplete,
-            3 => Mode::Terminated,
-            4 => Mode::Error,
-            _ => return None,
-        })
-    }
-}
+pub use traction_fmi_support::{FmuError, FmuResult, Logger, Mode, NullLogger, Status};
 
 /// Everything an FMU state holds (fmi2GetFMUstate): the mode, time,
 /// parameters, inputs and outputs. The variator itself is rebuilt from the
@@ -149,7 +119,10 @@ impl Snapshot {
         if bytes[0] != STATE_VERSION {
             return Err(bad("unknown state version"));
         }
-        let mode = Mode::from_code(bytes[1]).ok_or_else(|| bad("invalid mode"))?;
+        // A saved state may be in the error mode, never in the fatal one.
+        let mode = Mode::from_code(bytes[1])
+            .filter(|m| *m != Mode::Fatal)
+            .ok_or_else(|| bad("invalid mode"))?;
         let mut pos = HEADER;
         let mut f = || {
             let mut a = [0u8; 8];
@@ -239,19 +212,7 @@ impl VariatorFmu {
     }
 
     fn require(&mut self, what: &str, modes: &[Mode]) -> Result<(), FmuError> {
-        if modes.contains(&self.mode) {
-            Ok(())
-        } else if self.mode == Mode::Fatal {
-            Err(FmuError {
-                status: Status::Fatal,
-                message: format!(
-                    "{what}: the instance had a fatal error; only fmi2FreeInstance is allowed"
-                ),
-            })
-        } else {
-            let e = FmuError::error(format!("{what}: not allowed in state {:?}", self.mode));
-            Err(self.fail(e))
-        }
+        self.mode.check(what, modes).map_err(|e| self.fail(e))
     }
 
     /// Enter the error state and hand the error back.

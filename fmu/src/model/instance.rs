@@ -118,22 +118,7 @@ impl TractionFmu {
     }
 
     fn require(&mut self, func: &str, allowed: &[Mode]) -> Result<(), FmuError> {
-        if allowed.contains(&self.mode) {
-            Ok(())
-        } else if self.mode == Mode::Fatal {
-            Err(FmuError {
-                status: Status::Fatal,
-                message: format!(
-                    "{func}: the instance had a fatal error; only fmi2FreeInstance is allowed"
-                ),
-            })
-        } else {
-            let e = FmuError::error(format!(
-                "{func}: not allowed in state {:?} (allowed: {allowed:?})",
-                self.mode
-            ));
-            Err(self.fail(e))
-        }
+        self.mode.check(func, allowed).map_err(|e| self.fail(e))
     }
 
     pub(super) fn physics_parameters(&self) -> Result<physics::Parameters, FmuError> {

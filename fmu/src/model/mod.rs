@@ -14,7 +14,7 @@ mod tests;
 pub use instance::{SideSlipSource, SpinSource, TractionFmu};
 pub use snapshot::Snapshot;
 
-pub use traction_fmi_support::{FmuError, FmuResult, Logger, NullLogger, Status};
+pub use traction_fmi_support::{FmuError, FmuResult, Logger, Mode, NullLogger, Status};
 
 /// One FMI 2 co-simulation slave, safe Rust. The C wrappers of [`crate::ffi`]
 /// call exactly these methods; every method checks that it is allowed in the
@@ -118,33 +118,4 @@ pub trait CoSimulation: Sized {
     /// argument, an unsupported function), as the model's own refusals do;
     /// returns `error` with the status it now has.
     fn enter_error_state(&mut self, error: FmuError) -> FmuError;
-}
-
-/// FMI 2 co-simulation states.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Mode {
-    /// After fmi2Instantiate or fmi2Reset.
-    Instantiated = 0,
-    /// Between fmi2EnterInitializationMode and fmi2ExitInitializationMode.
-    Initialization = 1,
-    /// Initialized; steps may be taken.
-    StepComplete = 2,
-    /// After fmi2Terminate.
-    Terminated = 3,
-    /// After a call returned fmi2Error.
-    Error = 4,
-    /// After a call returned fmi2Fatal.
-    Fatal = 5,
-}
-
-impl Mode {
-    fn from_code(c: u8) -> Option<Self> {
-        Some(match c {
-            0 => Mode::Instantiated,
-            1 => Mode::Initialization,
-            2 => Mode::StepComplete,
-            3 => Mode::Terminated,
-            _ => return None,
-        })
-    }
 }
