@@ -7,6 +7,8 @@ use std::path::Path;
 
 use zip::write::SimpleFileOptions;
 
+use crate::xml::Causality;
+
 /// A platform of the archive's `binaries/` folder (FMI 2.0 platform names).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Platform {
@@ -106,35 +108,47 @@ pub fn html_escape(s: &str) -> String {
         .replace('>', "&gt;")
 }
 
-/// One row of the documentation page's variable table (name, causality,
-/// unit, start, description; unit and description escaped).
-pub fn documentation_row(
-    name: &str,
-    causality: &str,
-    unit: &str,
-    start: &str,
-    description: &str,
-) -> String {
-    format!(
-        "<tr><td>{name}</td><td>{causality}</td><td>{}</td><td>{start}</td><td>{}</td></tr>\n",
-        html_escape(unit),
-        html_escape(description)
-    )
+/// One row of the documentation page's variable table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DocumentationRow<'a> {
+    /// Variable name.
+    pub name: &'a str,
+    /// Causality.
+    pub causality: Causality,
+    /// Unit (empty for Integer, Enumeration, Boolean).
+    pub unit: &'a str,
+    /// Start value as text (empty for none).
+    pub start: String,
+    /// Description.
+    pub description: &'a str,
 }
 
-/// The head of the documentation page up to the variable table's header
-/// row: title `model_identifier`, the heading, and `introduction` (HTML).
-pub fn documentation_head(model_identifier: &str, introduction: &str) -> String {
-    format!(
+/// documentation/index.html: title and heading `model_identifier`,
+/// `introduction` (HTML) and the variable table (text escaped).
+pub fn documentation_html<'a>(
+    model_identifier: &str,
+    introduction: &str,
+    rows: impl IntoIterator<Item = DocumentationRow<'a>>,
+) -> String {
+    let mut h = format!(
         "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>{model_identifier}</title></head><body>\n\
          <h1>{model_identifier} FMU (FMI 2.0 co-simulation)</h1>\n\
          <p>{introduction}</p>\n\
          <table border=\"1\"><tr><th>name</th><th>causality</th><th>unit</th><th>start</th><th>description</th></tr>\n"
-    )
+    );
+    for r in rows {
+        h.push_str(&format!(
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+            r.name,
+            r.causality.as_str(),
+            html_escape(r.unit),
+            r.start,
+            html_escape(r.description)
+        ));
+    }
+    h.push_str("</table></body></html>\n");
+    h
 }
-
-/// The end of the documentation page after the table's rows.
-pub const DOCUMENTATION_TAIL: &str = "</table></body></html>\n";
 
 /// Writes the `.fmu` at `out`: `model_description`, the compiled cdylib of
 /// each platform (read from its path, stored as
@@ -222,11 +236,22 @@ mod tests {
     }
 
     #[test]
-    fn documentation_rows_escape_text() {
-        assert_eq!(
-            documentation_row("x", "input", "W/(m.K)", "1", "a <b> & c"),
-            "<tr><td>x</td><td>input</td><td>W/(m.K)</td><td>1</td><td>a &lt;b&gt; &amp; c</td></tr>\n"
+    fn the_documentation_page_escapes_text() {
+        let row = DocumentationRow {
+            name: "x",
+            causality: Causality::Input,
+            unit: "W/(m.K)",
+            start: "1".into(),
+            description: "a <b> & c",
+        };
+        let h = documentation_html("M", "<b>intro</b>", [row]);
+        assert!(
+            h.starts_with("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>M</title>")
         );
+        assert!(h.contains("<h1>M FMU (FMI 2.0 co-simulation)</h1>\n<p><b>intro</b></p>\n"));
+        assert!(h.ends_with(
+            "<tr><td>x</td><td>input</td><td>W/(m.K)</td><td>1</td><td>a &lt;b&gt; &amp; c</td></tr>\n</table></body></html>\n"
+        ));
     }
 
     #[test]

@@ -5,9 +5,7 @@
 
 use std::path::Path;
 
-use traction_fmi_support::package::{
-    DOCUMENTATION_TAIL, documentation_head, documentation_row, write_fmu as write_archive,
-};
+use traction_fmi_support::package::{DocumentationRow, write_fmu as write_archive};
 pub use traction_fmi_support::package::{PackageError, Platform};
 
 use crate::model_description::{MODEL_IDENTIFIER, model_description_xml};
@@ -20,14 +18,7 @@ pub const LIBRARY_NAME: &str = "traction_fmu";
 
 /// documentation/index.html: the variable table for humans.
 pub fn documentation_html() -> String {
-    let mut h = documentation_head(
-        MODEL_IDENTIFIER,
-        "Lubricated rolling traction contact between two rotating bodies, after the NASA traction report \
-         (Hertz contact, Johnson &amp; Tevaarwerk elastic/plastic traction). Connect the angular speeds of the \
-         two bodies to <code>omega1</code>, <code>omega2</code> and feed <code>torque1</code>, <code>torque2</code> \
-         back to their inertias. Fluids: Santotrac 50 and TDF-88 through the report's correlations, or user m and &mu;.",
-    );
-    for v in VARIABLES {
+    let rows = VARIABLES.iter().map(|v| {
         let (unit, start) = match v.kind {
             Kind::Real {
                 declared, start, ..
@@ -43,16 +34,22 @@ pub fn documentation_html() -> String {
             }
             Kind::Boolean { start } => ("", start.map(|s| s.to_string()).unwrap_or_default()),
         };
-        h.push_str(&documentation_row(
-            v.name,
-            v.causality.as_str(),
+        DocumentationRow {
+            name: v.name,
+            causality: v.causality,
             unit,
-            &start,
-            v.description,
-        ));
-    }
-    h.push_str(DOCUMENTATION_TAIL);
-    h
+            start,
+            description: v.description,
+        }
+    });
+    traction_fmi_support::package::documentation_html(
+        MODEL_IDENTIFIER,
+        "Lubricated rolling traction contact between two rotating bodies, after the NASA traction report \
+         (Hertz contact, Johnson &amp; Tevaarwerk elastic/plastic traction). Connect the angular speeds of the \
+         two bodies to <code>omega1</code>, <code>omega2</code> and feed <code>torque1</code>, <code>torque2</code> \
+         back to their inertias. Fluids: Santotrac 50 and TDF-88 through the report's correlations, or user m and &mu;.",
+        rows,
+    )
 }
 
 /// Writes the `.fmu` at `out` with the linux64 binary only, from the

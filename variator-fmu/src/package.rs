@@ -5,24 +5,17 @@
 use std::path::Path;
 
 pub use traction_fmi_support::package::PackageError;
-use traction_fmi_support::package::{
-    DOCUMENTATION_TAIL, Platform, documentation_head, documentation_row, write_fmu as write_archive,
-};
+use traction_fmi_support::package::{DocumentationRow, Platform, write_fmu as write_archive};
 
 use crate::model_description::{MODEL_IDENTIFIER, model_description_xml};
 use crate::variables::{Kind, VARIABLES};
 
+/// The name of this crate's library: cargo makes `libtraction_variator_fmu.so`.
+pub const LIBRARY_NAME: &str = "traction_variator_fmu";
+
 /// documentation/index.html: the variable table for humans.
 pub fn documentation_html() -> String {
-    let mut h = documentation_head(
-        MODEL_IDENTIFIER,
-        "Toroidal CVT variator between an input and an output shaft: n power rollers, each with two lubricated \
-         traction contacts (Hertz contact, Johnson &amp; Tevaarwerk elastic/plastic traction with spin, after the NASA \
-         traction report); the roller speed follows from its torque balance. Connect the shaft speeds to \
-         <code>omega_in</code>, <code>omega_out</code> and feed <code>torque_in</code>, <code>torque_out</code> back to \
-         their inertias; <code>tilt_angle</code> sets the ratio, <code>end_load</code> the clamping.",
-    );
-    for v in VARIABLES {
+    let rows = VARIABLES.iter().map(|v| {
         let (unit, start) = match v.kind {
             Kind::Real { unit, start } => (unit, start.map(|s| format!("{s}")).unwrap_or_default()),
             Kind::Integer { start, .. } => ("", start.to_string()),
@@ -31,16 +24,23 @@ pub fn documentation_html() -> String {
             }
             Kind::Boolean { start } => ("", start.to_string()),
         };
-        h.push_str(&documentation_row(
-            v.name,
-            v.causality.as_str(),
+        DocumentationRow {
+            name: v.name,
+            causality: v.causality,
             unit,
-            &start,
-            v.description,
-        ));
-    }
-    h.push_str(DOCUMENTATION_TAIL);
-    h
+            start,
+            description: v.description,
+        }
+    });
+    traction_fmi_support::package::documentation_html(
+        MODEL_IDENTIFIER,
+        "Toroidal CVT variator between an input and an output shaft: n power rollers, each with two lubricated \
+         traction contacts (Hertz contact, Johnson &amp; Tevaarwerk elastic/plastic traction with spin, after the NASA \
+         traction report); the roller speed follows from its torque balance. Connect the shaft speeds to \
+         <code>omega_in</code>, <code>omega_out</code> and feed <code>torque_in</code>, <code>torque_out</code> back to \
+         their inertias; <code>tilt_angle</code> sets the ratio, <code>end_load</code> the clamping.",
+        rows,
+    )
 }
 
 /// Writes the `.fmu` at `out` from the compiled linux64 cdylib at `library`.
