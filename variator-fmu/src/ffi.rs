@@ -1,5 +1,6 @@
-//! The C boundary: FMI 2.0 types and the exported `fmi2*` functions of a
-//! co-simulation FMU.
+//! The C boundary: the exported `fmi2*` functions of a co-simulation FMU, on
+//! the FMI 2.0 types and guards of `traction_fmi_support::ffi` (shared with
+//! traction-fmu).
 //!
 //! Every entry point checks its pointers, turns them into slices and strings,
 //! calls one method of [`VariatorFmu`] inside [`std::panic::catch_unwind`],
@@ -10,8 +11,8 @@
 //! derivatives, input/output derivatives, asynchronous steps, strings)
 //! return `fmi2Error` with a logged message.
 //!
-//! The instance is a `Box` owned by the host through the `fmi2Component`
-//! pointer; there is no global state.
+//! The instance is a magic-tagged `Box` owned by the host through the
+//! `fmi2Component` pointer; there is no global state.
 #![allow(unsafe_code)]
 // The FMI 2.0 standard names these functions (fmi2DoStep, ...); with the "no-export"
 // feature they are plain Rust functions and the lint would ask for snake case.

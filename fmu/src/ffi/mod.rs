@@ -1,5 +1,6 @@
-//! The C boundary: hand-written FMI 2.0 types and the 34 exported functions
-//! of an FMI 2.0 co-simulation FMU (common + co-simulation API).
+//! The C boundary: the 34 exported functions of an FMI 2.0 co-simulation FMU
+//! (common + co-simulation API), on the hand-written FMI 2.0 types and
+//! guards of `traction_fmi_support::ffi` (shared with the variator FMU).
 //!
 //! Every entry point is a thin wrapper: it checks its pointers, turns them
 //! into slices and strings, calls one method of the safe
@@ -12,8 +13,8 @@
 //! input/output derivatives, asynchronous steps, string variables) return
 //! `fmi2Error` with a logged message, never `fmi2OK`.
 //!
-//! The instance is a `Box` owned by the host through the `fmi2Component`
-//! pointer; no global or thread-local state exists.
+//! The instance is a magic-tagged `Box` owned by the host through the
+//! `fmi2Component` pointer; no global or thread-local state exists.
 #![allow(unsafe_code)]
 
 use std::ffi::c_char;
