@@ -85,6 +85,28 @@ pub enum Mode {
 }
 
 impl Mode {
+    /// Every mode but the fatal one (fmi2Reset, fmi2SetFMUstate).
+    pub const NOT_FATAL: &'static [Mode] = &[
+        Mode::Instantiated,
+        Mode::Initialization,
+        Mode::StepComplete,
+        Mode::Terminated,
+        Mode::Error,
+    ];
+    /// Where the fmi2Get{Real,Integer,Boolean} of the FMI 2.0 co-simulation
+    /// state machine are allowed.
+    pub const GET: &'static [Mode] = &[
+        Mode::Initialization,
+        Mode::StepComplete,
+        Mode::Terminated,
+        Mode::Error,
+    ];
+    /// Where a fixed parameter may be set.
+    pub const SET_PARAMETER: &'static [Mode] = &[Mode::Instantiated, Mode::Initialization];
+    /// Where an input may be set.
+    pub const SET_INPUT: &'static [Mode] =
+        &[Mode::Instantiated, Mode::Initialization, Mode::StepComplete];
+
     /// The mode of a code (`mode as u8`); `None` for any other byte. Which
     /// modes a saved FMU state may hold is each FMU's own rule.
     pub fn from_code(c: u8) -> Option<Self> {
@@ -149,5 +171,32 @@ mod tests {
             (e.status, e.to_string()),
             (Status::Error, "x out of range".into())
         );
+    }
+
+    #[test]
+    fn modes_round_trip_their_codes_and_check_calls() {
+        for c in 0..=5 {
+            assert_eq!(Mode::from_code(c).map(|m| m as u8), Some(c));
+        }
+        assert_eq!(Mode::from_code(6), None);
+        let allowed = [Mode::Initialization, Mode::StepComplete];
+        assert_eq!(Mode::StepComplete.check("fmi2DoStep", &allowed), Ok(()));
+        let e = Mode::Instantiated
+            .check("fmi2DoStep", &allowed)
+            .unwrap_err();
+        assert_eq!(e.status, Status::Error);
+        assert_eq!(
+            e.message,
+            "fmi2DoStep: not allowed in state Instantiated (allowed: [Initialization, StepComplete])"
+        );
+        let f = Mode::Fatal.check("fmi2DoStep", &allowed).unwrap_err();
+        assert_eq!(f.status, Status::Fatal);
+        assert!(f.message.contains("only fmi2FreeInstance"));
+        // The FMI 2.0 co-simulation state machine: getters from initialization
+        // on, also in the error state; nothing but fmi2FreeInstance when fatal.
+        assert!(!Mode::NOT_FATAL.contains(&Mode::Fatal) && Mode::NOT_FATAL.len() == 5);
+        assert!(!Mode::GET.contains(&Mode::Instantiated) && Mode::GET.contains(&Mode::Error));
+        assert!(!Mode::SET_PARAMETER.contains(&Mode::StepComplete));
+        assert!(Mode::SET_INPUT.contains(&Mode::StepComplete));
     }
 }

@@ -169,15 +169,6 @@ pub struct VariatorFmu {
     variator: Option<ToroidalVariator>,
 }
 
-const GET_MODES: &[Mode] = &[
-    Mode::Initialization,
-    Mode::StepComplete,
-    Mode::Terminated,
-    Mode::Error,
-];
-const PARAM_MODES: &[Mode] = &[Mode::Instantiated, Mode::Initialization];
-const INPUT_MODES: &[Mode] = &[Mode::Instantiated, Mode::Initialization, Mode::StepComplete];
-
 fn regime_code(r: Regime, load: f64) -> i32 {
     if load <= 0.0 {
         return 0;
@@ -462,7 +453,7 @@ impl VariatorFmu {
 
     /// fmi2GetReal.
     pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64], log: &mut dyn Logger) -> FmuResult {
-        self.require("fmi2GetReal", GET_MODES)?;
+        self.require("fmi2GetReal", Mode::GET)?;
         self.check_len("fmi2GetReal", vrs.len(), values.len())?;
         let mut status = Status::Ok;
         if self.mode != Mode::Error && vrs.iter().any(|&r| variables::output_index(r).is_some()) {
@@ -503,11 +494,11 @@ impl VariatorFmu {
                 return Err(self.fail(e));
             }
             if var.causality == Causality::Parameter {
-                self.require("fmi2SetReal of a parameter", PARAM_MODES)?;
+                self.require("fmi2SetReal of a parameter", Mode::SET_PARAMETER)?;
                 self.s.params[r as usize - 1] = x;
                 self.variator = None;
             } else {
-                self.require("fmi2SetReal of an input", INPUT_MODES)?;
+                self.require("fmi2SetReal of an input", Mode::SET_INPUT)?;
                 self.s.inputs[(r - vr::OMEGA_IN) as usize] = x;
             }
             self.s.dirty = true;
@@ -522,7 +513,7 @@ impl VariatorFmu {
         values: &mut [i32],
         log: &mut dyn Logger,
     ) -> FmuResult {
-        self.require("fmi2GetInteger", GET_MODES)?;
+        self.require("fmi2GetInteger", Mode::GET)?;
         self.check_len("fmi2GetInteger", vrs.len(), values.len())?;
         let mut status = Status::Ok;
         if self.mode != Mode::Error
@@ -571,7 +562,7 @@ impl VariatorFmu {
                 ));
                 return Err(self.fail(e));
             }
-            self.require("fmi2SetInteger of a parameter", PARAM_MODES)?;
+            self.require("fmi2SetInteger of a parameter", Mode::SET_PARAMETER)?;
             match r {
                 vr::ROLLERS => self.s.rollers = x,
                 vr::FLUID => self.s.fluid = x,
@@ -585,7 +576,7 @@ impl VariatorFmu {
 
     /// fmi2GetBoolean.
     pub fn get_boolean(&mut self, vrs: &[u32], values: &mut [bool]) -> FmuResult {
-        self.require("fmi2GetBoolean", GET_MODES)?;
+        self.require("fmi2GetBoolean", Mode::GET)?;
         self.check_len("fmi2GetBoolean", vrs.len(), values.len())?;
         for (&r, v) in vrs.iter().zip(values.iter_mut()) {
             *v = match r {
@@ -612,7 +603,7 @@ impl VariatorFmu {
                 ));
                 return Err(self.fail(e));
             }
-            self.require("fmi2SetBoolean of a parameter", PARAM_MODES)?;
+            self.require("fmi2SetBoolean of a parameter", Mode::SET_PARAMETER)?;
             if r == vr::MAP {
                 self.s.map = x;
             } else {
@@ -666,16 +657,7 @@ impl VariatorFmu {
 
     /// fmi2SetFMUstate.
     pub fn set_state(&mut self, state: &Snapshot) -> FmuResult {
-        self.require(
-            "fmi2SetFMUstate",
-            &[
-                Mode::Instantiated,
-                Mode::Initialization,
-                Mode::StepComplete,
-                Mode::Terminated,
-                Mode::Error,
-            ],
-        )?;
+        self.require("fmi2SetFMUstate", Mode::NOT_FATAL)?;
         let params_changed = self.s.params != state.params
             || self.s.rollers != state.rollers
             || self.s.fluid != state.fluid
