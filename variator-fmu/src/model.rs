@@ -119,7 +119,7 @@ impl Snapshot {
         if bytes[0] != STATE_VERSION {
             return Err(bad("unknown state version"));
         }
-        // A saved state may be in the error mode, never in the fatal one.
+        // Every mode but the fatal one is restorable.
         let mode = Mode::from_code(bytes[1])
             .filter(|m| *m != Mode::Fatal)
             .ok_or_else(|| bad("invalid mode"))?;
