@@ -20,7 +20,9 @@
 
 use std::panic::catch_unwind;
 
-use traction_fmi_support::ffi::{self as support, HostCallback, guarded, lossy_string};
+use traction_fmi_support::ffi::{
+    self as support, HostCallback, guarded, lossy_string, slice, slice_mut,
+};
 pub use traction_fmi_support::ffi::{
     FMI2_COSIMULATION, FMI2_DISCARD, FMI2_ERROR, FMI2_FATAL, FMI2_LAST_SUCCESSFUL_TIME, FMI2_OK,
     FMI2_TERMINATED, FMI2_WARNING, Fmi2Boolean, Fmi2Byte, Fmi2CallbackFunctions,
@@ -80,24 +82,6 @@ fn with_instance(
             FMI2_FATAL
         }
     }
-}
-
-/// Slice from a (pointer, length) pair; NULL is accepted only for length 0.
-///
-/// # Safety
-/// A non-NULL `p` must point to `n` valid elements.
-unsafe fn slice<'a, T>(p: *const T, n: usize) -> Option<&'a [T]> {
-    // SAFETY: per this function's contract.
-    unsafe { support::slice(p, n) }
-}
-
-/// Mutable slice from a (pointer, length) pair.
-///
-/// # Safety
-/// A non-NULL `p` must point to `n` valid, writable elements.
-unsafe fn slice_mut<'a, T>(p: *mut T, n: usize) -> Option<&'a mut [T]> {
-    // SAFETY: per this function's contract.
-    unsafe { support::slice_mut(p, n) }
 }
 
 fn null(func: &str, what: &str) -> FmuError {
