@@ -5,9 +5,10 @@
 //! GUID, so it changes whenever the description changes; `fmi2Instantiate`
 //! checks it.
 
+use quick_xml::events::BytesStart;
 use traction_fmi_support::xml::{
-    Document, LogCategory, Variability, XmlResult, XmlWriter, enumeration_element, real_element,
-    write_scalar_variable,
+    Document, LogCategory, Variability, XmlResult, XmlWriter, boolean_element, enumeration_element,
+    real_element, write_scalar_variable,
 };
 
 pub use traction_fmi_support::xml::fnv1a_128;
@@ -65,14 +66,14 @@ fn write_model_variables(w: &mut XmlWriter) -> XmlResult {
         let element = match v.kind {
             Kind::Real { unit, start } => real_element(None, unit, None, None, start),
             Kind::Integer { start, min, max } => {
-                let mut e = quick_xml::events::BytesStart::new("Integer");
+                let mut e = BytesStart::new("Integer");
                 e.push_attribute(("min", min.to_string().as_str()));
                 e.push_attribute(("max", max.to_string().as_str()));
                 e.push_attribute(("start", start.to_string().as_str()));
                 e
             }
             Kind::Enumeration { declared, start } => enumeration_element(declared, start),
-            Kind::Boolean { start } => traction_fmi_support::xml::boolean_element(Some(start)),
+            Kind::Boolean { start } => boolean_element(Some(start)),
         };
         write_scalar_variable(
             w,
