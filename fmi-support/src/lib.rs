@@ -17,11 +17,11 @@
 //!   units, enumeration types, log categories, default experiment, the
 //!   `<ModelStructure>` sections, the GUID (FNV-1a 128 of the XML).
 //! * [`package`] — the `.fmu` zip: layout, `binaries/<platform>/`, the
-//!   documentation page's table rows.
+//!   documentation page.
 //!
 //! It exports no C symbols: each FMU crate keeps its own `fmi2*` functions,
 //! its variable table, its state machine and its messages, and calls these
-//! helpers. Both FMU crates link it, and the CLI links both FMU crates.
+//! pieces. Both FMU crates link it, and the CLI links both FMU crates.
 //!
 //! ```
 //! use traction_fmi_support::xml::{fnv1a_128, guid_of};
