@@ -72,6 +72,17 @@ pub(super) fn smooth_step(t: f64) -> f64 {
     t * t * (3.0 - 2.0 * t)
 }
 
+/// |a| = |a0 − J3·Y| below which a strip is the spin pole's (relative to
+/// |a0|; a few ulps of a0). Its slip is then purely lateral and reverses at
+/// vy = 0, and its discretised strip sums are not the limit of those at
+/// a → 0 (where the slip direction turns by π within ≈ |a/q2| of vy = 0
+/// and the plastic steps are set by that turn): with J = (5.05, 0, −8.57)
+/// at k = 2.48, tol 1e-4, ∫Zy dX at a = 4.4e-16 (1 ulp of a0) was
+/// 4.0e-7 relative below its value at a = 0, which took J4..J6 up and down
+/// by up to 1.1e-9 between inputs 5e-10 apart, at random along a line of
+/// inputs (tests/continuity.rs; docs/decisions/0089).
+const POLE_SNAP: f64 = 8.0 * f64::EPSILON;
+
 /// Largest number of elastic ↔ plastic switches per strip.
 const MAX_SWITCH: usize = 16;
 
@@ -356,11 +367,19 @@ impl Scaled {
         Scaled { gy, ..self }
     }
 
-    /// The strip at Y: elastic rates (a, gy·(b1 + q2·X)).
+    /// The strip at Y: elastic rates (a, gy·(b1 + q2·X)), a = a0 − J3·Y
+    /// taken as 0 within [`POLE_SNAP`] of a0 (the spin pole's strip, an
+    /// edge of the initial panels at Y = sin(asin(a0/J3)), where the
+    /// rounding of Y leaves a = 0 or ± an ulp of a0 at random).
     pub(crate) fn strip(&self, y: f64) -> Strip {
+        let a = self.a0 - self.j3 * y;
         Strip {
             c: (1.0 - y * y).max(0.0).sqrt(),
-            a: self.a0 - self.j3 * y,
+            a: if a.abs() <= POLE_SNAP * self.a0.abs() {
+                0.0
+            } else {
+                a
+            },
             b1: self.gy * self.b1,
             q2: self.gy * self.q2,
             gy: self.gy,
