@@ -115,7 +115,10 @@ fn outputs_without_side_slip_are_continuous_at_round_off() {
     // to an ulp of a0 there, and on the second line it stays elastic to the
     // outlet with Z(c) = 0 (a root of the yield quartic at the outlet).
     // Its a left as 0 or ± an ulp at random moved J4..J6 up and down by up
-    // to 1.1e-9 (first line; second differences 1.07e-9): a step that a
+    // to 1.1e-9 (first line; second differences 1.07e-9), and its yield
+    // point iterated to either side of the outlet's threshold at random
+    // (the Halley search before its outlet test) flipped its flow topology
+    // and the panels' decisions with it (second line: 1.8e-6): steps that a
     // root solve on the outputs cannot pass (the variator's roller balance
     // asks for 1e-12 of the torques). A smooth stretch gives |f''|·h² ≈
     // 1e-18 plus the round-off of J4..J6, ≈ 1e-15; measured ≤ 2.2e-15,

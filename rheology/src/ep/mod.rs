@@ -8,8 +8,9 @@
 //! * elastic segments: Z is a polynomial in X (closed form, integrated
 //!   exactly); first yield or reloading is the first root of
 //!   the quartic |Z(X)|² − L(X)², bracketed exactly between the turning
-//!   points of its cubic factor, then safeguarded Newton (stopped once its
-//!   quadratic error estimate is 1e-3·s_step⁴ of c);
+//!   points of its cubic factor, started by Halley steps on that cubic,
+//!   then safeguarded Halley (stopped once its cubic error estimate is
+//!   1e-3·s_step⁴ of c);
 //! * plastic segments: Z = L·n with the unit vector n rotating at
 //!   dn/ds = (2/3)(v·t)·t, t ⟂ n (Prandtl–Reuss consistency; the 1/√(c−X)
 //!   singularity of dθ/dX is absorbed by dX/ds = c·cos s; with an
@@ -163,15 +164,6 @@ impl Strip {
         )
     }
 
-    /// f = |Z|² − L² and df/dX along an elastic segment.
-    #[inline]
-    fn f_el(&self, x0: f64, z0: (f64, f64), x: f64) -> (f64, f64) {
-        let z = self.z_el(x0, z0, x);
-        let f = z.0 * z.0 + z.1 * z.1 - 2.25 * (self.c * self.c - x * x);
-        let fp = 2.0 * (z.0 * self.a + z.1 * self.vy(x)) + 4.5 * x;
-        (f, fp)
-    }
-
     /// Exact integrals of an elastic segment from x0 to x1.
     fn el_sums(&self, x0: f64, z0: (f64, f64), x1: f64) -> StripSums {
         let d = x1 - x0;
@@ -297,7 +289,8 @@ impl Strip {
             let xy = self.find_yield(x0, z0, steps.0);
             acc += self.el_sums(x0, z0, xy);
             rec(Event::Elastic { x0, z0, x1: xy });
-            if xy >= c * (1.0 - 1e-15) {
+            // c exactly where the crossing is within `OUTLET_GAP` of it.
+            if xy >= c {
                 ends_elastic = 1;
                 break;
             }
