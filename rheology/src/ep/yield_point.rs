@@ -319,4 +319,48 @@ mod tests {
         assert!(count > 700, "{count} cases");
         eprintln!("worst |X − X_ref|/c = {worst:.2e} over {count} cases");
     }
+
+    #[test]
+    fn a_strip_whose_stress_returns_to_zero_at_the_outlet_ends_elastic() {
+        // The spin pole's strip without side slip (a = b1 = 0): Z = (0,
+        // q2·(X² − c²)/2) returns to 0 at the outlet and f = (c² − X²)·
+        // (q2²·(c² − X²)/4 − 9/4) < 0 inside when |q2|·c < 3, so the first
+        // root is c itself: exactly c, every time. Without the outlet test
+        // the iteration on the quartic's coefficients missed c in 838 of
+        // these 4000 strips, in 329 of them by more than the former
+        // ends-elastic threshold 1e-15·c (the strip's flow topology then
+        // flips). Beyond |q2|·c = 3 it yields inside, at c² − X² = 9/q2²
+        // (within the 1e-6·c of the test above).
+        let mut n = 0;
+        for i in 0..1000 {
+            let c = 0.05 + 0.95 * f64::from(i) / 999.0;
+            for r in [0.3, 1.7, 2.9, -2.2] {
+                let q2 = r / c;
+                let s = Strip {
+                    c,
+                    a: 0.0,
+                    b1: 0.0,
+                    q2,
+                    gy: 1.0,
+                };
+                let x = s.find_yield(-c, (0.0, 0.0), 0.1);
+                assert!(x == c, "c {c} q2 {q2}: {x:e}");
+                n += 1;
+            }
+        }
+        assert_eq!(n, 4000);
+        for r in [3.5, -6.0, 40.0] {
+            let (c, q2) = (0.8, r / 0.8);
+            let s = Strip {
+                c,
+                a: 0.0,
+                b1: 0.0,
+                q2,
+                gy: 1.0,
+            };
+            let x = s.find_yield(-c, (0.0, 0.0), 0.1);
+            let exact = -(c * c - 9.0 / (q2 * q2)).sqrt();
+            assert!((x - exact).abs() <= 1e-6 * c, "q2 {q2}: {x} vs {exact}");
+        }
+    }
 }
