@@ -103,7 +103,7 @@ pub fn run(args: FmuArgs) -> Result<(), CliError> {
                     .and_then(|p| p.1.clone());
                 let library = match given {
                     Some(l) => l,
-                    None => build_library(platform)?,
+                    None => build_library(CONTACT, platform)?,
                 };
                 libraries.push((platform, library));
             }
@@ -111,7 +111,11 @@ pub fn run(args: FmuArgs) -> Result<(), CliError> {
                 libraries.iter().map(|(p, l)| (*p, l.as_path())).collect();
             traction_fmu::package::write_fmu_for(&binaries, &b.out).map_err(CliError::model)?;
             for (platform, library) in &libraries {
-                eprintln!("packed {} ({})", platform.archive_path(), library.display());
+                eprintln!(
+                    "packed {} ({})",
+                    platform.archive_path(traction_fmu::model_description::MODEL_IDENTIFIER),
+                    library.display()
+                );
             }
             eprintln!("wrote {}", b.out.display());
             Ok(())
@@ -129,15 +133,37 @@ fn workspace_root() -> PathBuf {
 /// The MinGW-w64 linker of the win64 cross build (Debian `gcc-mingw-w64-x86-64`).
 const MINGW_LINKER: &str = "x86_64-w64-mingw32-gcc";
 
-fn build_library(platform: Platform) -> Result<PathBuf, CliError> {
+/// An FMU crate of this workspace that `traction fmu build` builds with cargo.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct FmuCrate {
+    /// The cargo package (`traction-fmu`).
+    pub package: &'static str,
+    /// Its folder in the workspace (`fmu`).
+    pub folder: &'static str,
+    /// Its library name (`traction_fmu`), which names the cdylib.
+    pub lib_name: &'static str,
+}
+
+/// traction-fmu: TractionContact.fmu.
+const CONTACT: FmuCrate = FmuCrate {
+    package: "traction-fmu",
+    folder: "fmu",
+    lib_name: traction_fmu::package::LIBRARY_NAME,
+};
+
+/// Builds the cdylib of `fmu` for `platform` (`cargo build --release -p
+/// <package> --lib`, with `--target` and the MinGW-w64 linker for win64) and
+/// returns its path from cargo's messages.
+pub(crate) fn build_library(fmu: FmuCrate, platform: Platform) -> Result<PathBuf, CliError> {
     let root = workspace_root();
-    let file = platform.cargo_library_name();
+    let package = fmu.package;
+    let file = platform.cargo_library_name(fmu.lib_name);
     let target_args = platform
         .rust_target()
         .map(|t| format!(" --target {t}"))
         .unwrap_or_default();
     let mut hint = format!(
-        "build it with `cargo build --release -p traction-fmu --lib{target_args}` in the traction workspace and pass `--{}library <target-dir>/{}release/{file}`",
+        "build it with `cargo build --release -p {package} --lib{target_args}` in the traction workspace and pass `--{}library <target-dir>/{}release/{file}`",
         if platform == Platform::Win64 {
             "win64-"
         } else {
@@ -153,7 +179,7 @@ fn build_library(platform: Platform) -> Result<PathBuf, CliError> {
             ", install the cross toolchain (`rustup target add x86_64-pc-windows-gnu`, Debian `gcc-mingw-w64-x86-64`; scripts/fmu_setup.sh does both), or pack linux64 only with `--platform linux64`",
         );
     }
-    if !root.join("fmu").join("Cargo.toml").is_file() {
+    if !root.join(fmu.folder).join("Cargo.toml").is_file() {
         return Err(CliError::Usage(format!(
             "the traction workspace {} is not available to build the {} FMU library; {hint}",
             root.display(),
@@ -166,7 +192,7 @@ fn build_library(platform: Platform) -> Result<PathBuf, CliError> {
         "build",
         "--release",
         "-p",
-        "traction-fmu",
+        package,
         "--lib",
         "--message-format=json-render-diagnostics",
     ]);
@@ -178,7 +204,7 @@ fn build_library(platform: Platform) -> Result<PathBuf, CliError> {
         }
     }
     eprintln!(
-        "running cargo build --release -p traction-fmu --lib{target_args} in {}",
+        "running cargo build --release -p {package} --lib{target_args} in {}",
         root.display()
     );
     let output = command
@@ -191,13 +217,13 @@ fn build_library(platform: Platform) -> Result<PathBuf, CliError> {
         })?;
     if !output.status.success() {
         return Err(CliError::Usage(format!(
-            "cargo build of traction-fmu for {} failed ({}); {hint}",
+            "cargo build of {package} for {} failed ({}); {hint}",
             platform.folder(),
             output.status
         )));
     }
     let stdout = String::from_utf8_lossy(&output.stdout);
-    artifact_path(&stdout, file)
+    artifact_path(&stdout, &file)
         .ok_or_else(|| CliError::Usage(format!("cargo did not report {file}; {hint}")))
 }
 
@@ -230,6 +256,13 @@ mod tests {
         assert_eq!(
             artifact_path(r#"{"reason":"build-finished"}"#, "libtraction_fmu.so"),
             None
+        );
+        // The variator's library among the contact's (a whole-workspace build).
+        let both = r#"{"reason":"compiler-artifact","filenames":["/t/release/libtraction_fmu.so"]}
+{"reason":"compiler-artifact","filenames":["/t/release/libtraction_variator_fmu.so","/t/release/libtraction_variator_fmu.rlib"]}"#;
+        assert_eq!(
+            artifact_path(both, "libtraction_variator_fmu.so"),
+            Some(PathBuf::from("/t/release/libtraction_variator_fmu.so"))
         );
         // The win64 build reports the DLL beside its import library.
         let win = r#"{"reason":"compiler-artifact","filenames":["/t/x86_64-pc-windows-gnu/release/traction_fmu.dll","/t/x86_64-pc-windows-gnu/release/libtraction_fmu.dll.a","/t/x86_64-pc-windows-gnu/release/libtraction_fmu.rlib"]}"#;

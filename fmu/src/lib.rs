@@ -16,10 +16,13 @@
 //! * [`model_description`] — modelDescription.xml generated from the table.
 //! * [`model`] — one safe trait [`model::CoSimulation`] and the instance
 //!   [`model::TractionFmu`] with the FMI 2 state machine and FMU states.
-//! * [`ffi`] — hand-written FMI 2 C types and the 34 exported `fmi2*`
-//!   functions: pointer checks, `catch_unwind`, logging through the host.
-//!   The only module with `unsafe`.
+//! * [`ffi`] — the 34 exported `fmi2*` functions: pointer checks,
+//!   `catch_unwind`, logging through the host. The only module with `unsafe`.
 //! * [`package`] — the `.fmu` zip archive.
+//!
+//! The FMI 2 C types, the guards of the C boundary, the XML document around
+//! the variable table and the archive writer are traction-fmi-support's,
+//! shared with the variator FMU (docs/decisions/0093).
 //!
 //! ```
 //! use traction_fmu::model::{CoSimulation, NullLogger, TractionFmu};

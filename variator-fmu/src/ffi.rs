@@ -1,5 +1,6 @@
-//! The C boundary: FMI 2.0 types and the exported `fmi2*` functions of a
-//! co-simulation FMU.
+//! The C boundary: the exported `fmi2*` functions of a co-simulation FMU, on
+//! the FMI 2.0 types and guards of `traction_fmi_support::ffi` (shared with
+//! traction-fmu).
 //!
 //! Every entry point checks its pointers, turns them into slices and strings,
 //! calls one method of [`VariatorFmu`] inside [`std::panic::catch_unwind`],
@@ -10,154 +11,50 @@
 //! derivatives, input/output derivatives, asynchronous steps, strings)
 //! return `fmi2Error` with a logged message.
 //!
-//! The instance is a `Box` owned by the host through the `fmi2Component`
-//! pointer; there is no global state.
+//! The instance is a magic-tagged `Box` owned by the host through the
+//! `fmi2Component` pointer; there is no global state.
 #![allow(unsafe_code)]
 // The FMI 2.0 standard names these functions (fmi2DoStep, ...); with the "no-export"
 // feature they are plain Rust functions and the lint would ask for snake case.
 #![allow(non_snake_case)]
 
-use std::ffi::{CStr, CString, c_char, c_int, c_uint, c_void};
-use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::panic::catch_unwind;
+
+use traction_fmi_support::ffi::{
+    self as support, HostCallback, guarded, lossy_string, slice, slice_mut,
+};
+pub use traction_fmi_support::ffi::{
+    FMI2_COSIMULATION, FMI2_DISCARD, FMI2_ERROR, FMI2_FATAL, FMI2_LAST_SUCCESSFUL_TIME, FMI2_OK,
+    FMI2_TERMINATED, FMI2_WARNING, Fmi2Boolean, Fmi2Byte, Fmi2CallbackFunctions,
+    Fmi2CallbackLogger, Fmi2Component, Fmi2ComponentEnvironment, Fmi2FmuState, Fmi2Integer,
+    Fmi2Real, Fmi2Status, Fmi2StatusKind, Fmi2String, Fmi2Type, Fmi2ValueReference,
+};
 
 use crate::model::{FmuError, FmuResult, Logger, Snapshot, Status, VariatorFmu};
 use crate::model_description::LOG_CATEGORIES;
 
-/// `fmi2Component`.
-pub type Fmi2Component = *mut c_void;
-/// `fmi2ComponentEnvironment`.
-pub type Fmi2ComponentEnvironment = *mut c_void;
-/// `fmi2FMUstate`.
-pub type Fmi2FmuState = *mut c_void;
-/// `fmi2ValueReference`.
-pub type Fmi2ValueReference = c_uint;
-/// `fmi2Real`.
-pub type Fmi2Real = f64;
-/// `fmi2Integer`.
-pub type Fmi2Integer = c_int;
-/// `fmi2Boolean`.
-pub type Fmi2Boolean = c_int;
-/// `fmi2String`.
-pub type Fmi2String = *const c_char;
-/// `fmi2Byte`.
-pub type Fmi2Byte = c_char;
-/// `fmi2Status`.
-pub type Fmi2Status = c_int;
-/// `fmi2Type`.
-pub type Fmi2Type = c_int;
-/// `fmi2StatusKind`.
-pub type Fmi2StatusKind = c_int;
-
-/// fmi2OK.
-pub const FMI2_OK: Fmi2Status = 0;
-/// fmi2Warning.
-pub const FMI2_WARNING: Fmi2Status = 1;
-/// fmi2Discard.
-pub const FMI2_DISCARD: Fmi2Status = 2;
-/// fmi2Error.
-pub const FMI2_ERROR: Fmi2Status = 3;
-/// fmi2Fatal.
-pub const FMI2_FATAL: Fmi2Status = 4;
-/// fmi2CoSimulation.
-pub const FMI2_COSIMULATION: Fmi2Type = 1;
-/// fmi2LastSuccessfulTime.
-pub const FMI2_LAST_SUCCESSFUL_TIME: Fmi2StatusKind = 2;
-/// fmi2Terminated.
-pub const FMI2_TERMINATED: Fmi2StatusKind = 3;
-
-/// `fmi2CallbackLogger` (variadic: the message is a printf format).
-pub type Fmi2CallbackLogger = Option<
-    unsafe extern "C" fn(
-        Fmi2ComponentEnvironment,
-        Fmi2String,
-        Fmi2Status,
-        Fmi2String,
-        Fmi2String,
-        ...
-    ),
->;
-
-/// `fmi2CallbackFunctions`; only `logger` and `component_environment` are used.
-#[repr(C)]
-#[derive(Debug, Clone, Copy)]
-pub struct Fmi2CallbackFunctions {
-    /// Logger (may be NULL).
-    pub logger: Fmi2CallbackLogger,
-    /// Not used.
-    pub allocate_memory: Option<unsafe extern "C" fn(usize, usize) -> *mut c_void>,
-    /// Not used.
-    pub free_memory: Option<unsafe extern "C" fn(*mut c_void)>,
-    /// Not used.
-    pub step_finished: Option<unsafe extern "C" fn(Fmi2ComponentEnvironment, Fmi2Status)>,
-    /// Passed back to the logger.
-    pub component_environment: Fmi2ComponentEnvironment,
-}
-
 const INSTANCE_MAGIC: u64 = 0x544f_524f_4944_414c; // "TOROIDAL"
 const STATE_MAGIC: u64 = 0x544f_524f_5354_4154; // "TOROSTAT"
 
+/// The host's logger with this FMU's filter: errors and warnings always,
+/// everything else only with debug logging on.
 struct HostLogger {
-    logger: Fmi2CallbackLogger,
-    env: Fmi2ComponentEnvironment,
-    name: CString,
+    host: HostCallback,
     debug: bool,
-}
-
-fn c_text(s: &str, escape_percent: bool) -> CString {
-    let t = if escape_percent {
-        s.replace('%', "%%")
-    } else {
-        s.to_owned()
-    };
-    CString::new(t.replace('\0', "\u{fffd}")).unwrap_or_default()
 }
 
 impl Logger for HostLogger {
     fn log(&mut self, status: Status, category: &str, message: &str) {
-        let Some(f) = self.logger else { return };
-        if status < Status::Warning && !self.debug {
-            return;
+        if status >= Status::Warning || self.debug {
+            self.host.send(status, category, message);
         }
-        let cat = c_text(category, false);
-        let msg = c_text(message, true);
-        // SAFETY: the host's logger with its environment pointer; all strings
-        // are valid NUL-terminated C strings that outlive the call.
-        unsafe {
-            f(
-                self.env,
-                self.name.as_ptr(),
-                status as Fmi2Status,
-                cat.as_ptr(),
-                msg.as_ptr(),
-            )
-        };
     }
 }
 
+/// What the host's `fmi2Component` points to (tagged with [`INSTANCE_MAGIC`]).
 struct Instance {
-    magic: u64,
     model: VariatorFmu,
     log: HostLogger,
-}
-
-struct StateBox {
-    magic: u64,
-    state: Snapshot,
-}
-
-fn category(status: Status) -> &'static str {
-    match status {
-        Status::Fatal => "logStatusFatal",
-        Status::Warning => "logStatusWarning",
-        _ => "logStatusError",
-    }
-}
-
-fn panic_message(p: &(dyn std::any::Any + Send)) -> String {
-    p.downcast_ref::<&str>()
-        .map(|s| (*s).to_owned())
-        .or_else(|| p.downcast_ref::<String>().cloned())
-        .unwrap_or_else(|| "unknown panic payload".to_owned())
 }
 
 /// Runs `f` on the instance behind `c`: pointer check, catch_unwind, logging.
@@ -166,61 +63,24 @@ fn with_instance(
     func: &str,
     f: impl FnOnce(&mut Instance) -> FmuResult,
 ) -> Fmi2Status {
-    if c.is_null() {
-        return FMI2_ERROR;
-    }
     // SAFETY: a non-NULL fmi2Component is the pointer fmi2Instantiate
     // returned (the standard requires it); the magic number catches most misuse.
-    let inst = unsafe { &mut *c.cast::<Instance>() };
-    if inst.magic != INSTANCE_MAGIC {
+    let Some(inst) = (unsafe { support::handle_mut::<Instance>(c, INSTANCE_MAGIC) }) else {
         return FMI2_ERROR;
-    }
-    match catch_unwind(AssertUnwindSafe(|| f(inst))) {
+    };
+    match guarded(|| f(&mut *inst)) {
         Ok(Ok(s)) => s as Fmi2Status,
         Ok(Err(FmuError { status, message })) => {
             inst.log
-                .log(status, category(status), &format!("{func}: {message}"));
+                .log(status, status.category(), &format!("{func}: {message}"));
             status as Fmi2Status
         }
-        Err(p) => {
+        Err(panic) => {
             inst.model.poison();
-            let msg = format!(
-                "{func}: internal error (panic: {})",
-                panic_message(p.as_ref())
-            );
+            let msg = format!("{func}: internal error (panic: {panic})");
             inst.log.log(Status::Fatal, "logStatusFatal", &msg);
             FMI2_FATAL
         }
-    }
-}
-
-/// Slice from a (pointer, length) pair; NULL is accepted only for length 0.
-///
-/// # Safety
-/// A non-NULL `p` must point to `n` valid elements.
-unsafe fn slice<'a, T>(p: *const T, n: usize) -> Option<&'a [T]> {
-    if n == 0 {
-        Some(&[])
-    } else if p.is_null() {
-        None
-    } else {
-        // SAFETY: the caller guarantees n valid elements.
-        Some(unsafe { std::slice::from_raw_parts(p, n) })
-    }
-}
-
-/// Mutable slice from a (pointer, length) pair.
-///
-/// # Safety
-/// A non-NULL `p` must point to `n` valid, writable elements.
-unsafe fn slice_mut<'a, T>(p: *mut T, n: usize) -> Option<&'a mut [T]> {
-    if n == 0 {
-        Some(&mut [])
-    } else if p.is_null() {
-        None
-    } else {
-        // SAFETY: the caller guarantees n valid elements.
-        Some(unsafe { std::slice::from_raw_parts_mut(p, n) })
     }
 }
 
@@ -256,16 +116,14 @@ pub unsafe extern "C" fn fmi2Instantiate(
 ) -> Fmi2Component {
     let r = catch_unwind(|| {
         // SAFETY: the host passes NULL or a valid callback struct.
-        let cb = unsafe { functions.as_ref() }.copied();
-        let text = |p: Fmi2String| -> Option<String> {
-            // SAFETY: NULL or a valid NUL-terminated string (FMI contract).
-            (!p.is_null()).then(|| unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
-        };
+        let cb = unsafe { support::callbacks(functions) };
+        // SAFETY: NULL or a valid NUL-terminated string (FMI contract).
+        let text = |p: Fmi2String| unsafe { lossy_string(p) };
         let name = text(instance_name).unwrap_or_default();
         let mut log = HostLogger {
-            logger: cb.and_then(|c| c.logger),
-            env: cb.map_or(std::ptr::null_mut(), |c| c.component_environment),
-            name: c_text(&name, false),
+            // SAFETY: the host's callbacks stay valid until fmi2FreeInstance
+            // (FMI 2.0), and the logger lives in the instance.
+            host: unsafe { HostCallback::new(cb, &name) },
             debug: logging_on != 0,
         };
         let fail = |log: &mut HostLogger, m: String| {
@@ -289,12 +147,7 @@ pub unsafe extern "C" fn fmi2Instantiate(
             return fail(&mut log, "GUID is NULL".into());
         };
         match VariatorFmu::instantiate(&g) {
-            Ok(model) => Box::into_raw(Box::new(Instance {
-                magic: INSTANCE_MAGIC,
-                model,
-                log,
-            }))
-            .cast::<c_void>(),
+            Ok(model) => support::into_handle(INSTANCE_MAGIC, Instance { model, log }),
             Err(m) => fail(&mut log, m),
         }
     });
@@ -311,13 +164,9 @@ pub unsafe extern "C" fn fmi2FreeInstance(c: Fmi2Component) {
         return;
     }
     let _ = catch_unwind(|| {
-        // SAFETY: a pointer from fmi2Instantiate (checked by the magic).
-        let inst = unsafe { &mut *c.cast::<Instance>() };
-        if inst.magic == INSTANCE_MAGIC {
-            inst.magic = 0;
-            // SAFETY: created by Box::into_raw in fmi2Instantiate.
-            drop(unsafe { Box::from_raw(c.cast::<Instance>()) });
-        }
+        // SAFETY: a pointer from fmi2Instantiate (checked by the magic; not
+        // freed otherwise).
+        unsafe { support::free_handle::<Instance>(c, INSTANCE_MAGIC) }
     });
 }
 
@@ -341,7 +190,7 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
                 return Err(null("fmi2SetDebugLogging", "a category"));
             }
             // SAFETY: non-NULL, NUL-terminated (FMI contract).
-            let s = unsafe { CStr::from_ptr(p) }.to_string_lossy();
+            let s = unsafe { lossy_string(p) }.unwrap_or_default();
             if !LOG_CATEGORIES.iter().any(|c| c.0 == s) {
                 return Err(FmuError::error(format!(
                     "fmi2SetDebugLogging: unknown category {s}"
@@ -583,25 +432,15 @@ pub unsafe extern "C" fn fmi2GetFMUstate(c: Fmi2Component, state: *mut Fmi2FmuSt
             return Err(null("fmi2GetFMUstate", "FMUstate"));
         }
         let snap = i.model.get_state()?;
-        // SAFETY: valid pointer (checked non-NULL).
-        let slot = unsafe { &mut *state };
-        if !slot.is_null() {
-            // SAFETY: a previous state of ours (checked by the magic).
-            let b = unsafe { &mut *slot.cast::<StateBox>() };
-            if b.magic != STATE_MAGIC {
-                return Err(FmuError::error(
-                    "fmi2GetFMUstate: *FMUstate is not a state of this FMU",
-                ));
-            }
-            b.state = snap;
+        // SAFETY: valid pointer (checked non-NULL) to NULL or a state of ours
+        // (checked by the magic).
+        if unsafe { support::store_handle(state, STATE_MAGIC, snap) } {
+            Ok(Status::Ok)
         } else {
-            *slot = Box::into_raw(Box::new(StateBox {
-                magic: STATE_MAGIC,
-                state: snap,
-            }))
-            .cast::<c_void>();
+            Err(FmuError::error(
+                "fmi2GetFMUstate: *FMUstate is not a state of this FMU",
+            ))
         }
-        Ok(Status::Ok)
     })
 }
 
@@ -609,19 +448,16 @@ pub unsafe extern "C" fn fmi2GetFMUstate(c: Fmi2Component, state: *mut Fmi2FmuSt
 ///
 /// # Safety
 /// `s` NULL or a pointer from [`fmi2GetFMUstate`] / [`fmi2DeSerializeFMUstate`].
-unsafe fn state_ref<'a>(s: Fmi2FmuState, func: &str) -> Result<&'a mut StateBox, FmuError> {
+unsafe fn state_ref<'a>(s: Fmi2FmuState, func: &str) -> Result<&'a mut Snapshot, FmuError> {
     if s.is_null() {
         return Err(null(func, "FMUstate"));
     }
     // SAFETY: caller contract.
-    let b = unsafe { &mut *s.cast::<StateBox>() };
-    if b.magic == STATE_MAGIC {
-        Ok(b)
-    } else {
-        Err(FmuError::error(format!(
-            "{func}: FMUstate is not a state of this FMU"
-        )))
-    }
+    unsafe { support::handle_mut(s, STATE_MAGIC) }.ok_or_else(|| not_ours(func))
+}
+
+fn not_ours(func: &str) -> FmuError {
+    FmuError::error(format!("{func}: FMUstate is not a state of this FMU"))
 }
 
 /// fmi2SetFMUstate.
@@ -633,7 +469,7 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, state: Fmi2FmuState) 
     with_instance(c, "fmi2SetFMUstate", |i| {
         // SAFETY: forwarded contract.
         let b = unsafe { state_ref(state, "fmi2SetFMUstate") }?;
-        i.model.set_state(&b.state)
+        i.model.set_state(b)
     })
 }
 
@@ -655,11 +491,10 @@ pub unsafe extern "C" fn fmi2FreeFMUstate(
         if slot.is_null() {
             return Ok(Status::Ok);
         }
-        // SAFETY: forwarded contract.
-        let b = unsafe { state_ref(*slot, "fmi2FreeFMUstate") }?;
-        b.magic = 0;
-        // SAFETY: created by Box::into_raw.
-        drop(unsafe { Box::from_raw(slot.cast::<StateBox>()) });
+        // SAFETY: forwarded contract (refused if not ours, then freed).
+        unsafe { state_ref(*slot, "fmi2FreeFMUstate") }?;
+        // SAFETY: a state of ours (checked above).
+        unsafe { support::free_handle::<Snapshot>(*slot, STATE_MAGIC) };
         *slot = std::ptr::null_mut();
         Ok(Status::Ok)
     })
@@ -682,7 +517,7 @@ pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
             return Err(null("fmi2SerializedFMUstateSize", "size"));
         }
         // SAFETY: valid pointer (checked non-NULL).
-        unsafe { *size = b.state.to_bytes().len() };
+        unsafe { *size = b.to_bytes().len() };
         Ok(Status::Ok)
     })
 }
@@ -701,7 +536,7 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(
     with_instance(c, "fmi2SerializeFMUstate", |_| {
         // SAFETY: forwarded contract.
         let b = unsafe { state_ref(state, "fmi2SerializeFMUstate") }?;
-        let data = b.state.to_bytes();
+        let data = b.to_bytes();
         if size < data.len() {
             return Err(FmuError::error(format!(
                 "fmi2SerializeFMUstate: buffer of {size} bytes, {} needed",
@@ -735,19 +570,13 @@ pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
             return Err(null("fmi2DeSerializeFMUstate", "FMUstate"));
         }
         let snap = Snapshot::from_bytes(data)?;
-        // SAFETY: valid pointer (checked non-NULL).
-        let slot = unsafe { &mut *state };
-        if slot.is_null() {
-            *slot = Box::into_raw(Box::new(StateBox {
-                magic: STATE_MAGIC,
-                state: snap,
-            }))
-            .cast::<c_void>();
+        // SAFETY: valid pointer (checked non-NULL) to NULL or a state of ours
+        // (checked by the magic).
+        if unsafe { support::store_handle(state, STATE_MAGIC, snap) } {
+            Ok(Status::Ok)
         } else {
-            // SAFETY: forwarded contract.
-            unsafe { state_ref(*slot, "fmi2DeSerializeFMUstate") }?.state = snap;
+            Err(not_ours("fmi2DeSerializeFMUstate"))
         }
-        Ok(Status::Ok)
     })
 }
 

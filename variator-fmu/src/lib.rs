@@ -17,7 +17,9 @@
 //! Layers (one way): [`variables`] (the table) → [`model_description`]
 //! (XML from the table) → [`model`] (safe instance, FMI state machine, FMU
 //! states) → [`ffi`] (the only `unsafe`: the exported `fmi2*` functions) and
-//! [`package`] (the `.fmu` zip).
+//! [`package`] (the `.fmu` zip). The FMI 2 C types and guards, the XML
+//! document around the table and the archive writer are
+//! traction-fmi-support's, shared with traction-fmu (docs/decisions/0093).
 //!
 //! ```
 //! use traction_variator_fmu::model::{NullLogger, VariatorFmu};

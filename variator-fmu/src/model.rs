@@ -15,87 +15,7 @@ use crate::variables::{
     self, Causality, Kind, N_INPUTS, N_REAL_OUTPUTS, N_REAL_PARAMS, VARIABLES, vr,
 };
 
-/// FMI 2 status, ordered by severity.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Status {
-    /// fmi2OK.
-    Ok = 0,
-    /// fmi2Warning.
-    Warning = 1,
-    /// fmi2Discard.
-    Discard = 2,
-    /// fmi2Error.
-    Error = 3,
-    /// fmi2Fatal.
-    Fatal = 4,
-}
-
-/// A failed call: its status and a message for the host's logger.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{message}")]
-pub struct FmuError {
-    /// fmi2Error or fmi2Fatal.
-    pub status: Status,
-    /// What went wrong, naming the variable or quantity.
-    pub message: String,
-}
-
-impl FmuError {
-    /// An fmi2Error with this message.
-    pub fn error(message: impl Into<String>) -> Self {
-        FmuError {
-            status: Status::Error,
-            message: message.into(),
-        }
-    }
-}
-
-/// Result of an FMI call: the status of a success (Ok or Warning) or the error.
-pub type FmuResult = Result<Status, FmuError>;
-
-/// Where an instance sends warnings.
-pub trait Logger {
-    /// Log a message of the given status and category.
-    fn log(&mut self, status: Status, category: &str, message: &str);
-}
-
-/// A logger that drops everything.
-#[derive(Debug, Default, Clone, Copy)]
-pub struct NullLogger;
-
-impl Logger for NullLogger {
-    fn log(&mut self, _: Status, _: &str, _: &str) {}
-}
-
-/// State of the FMI 2 co-simulation state machine.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Mode {
-    /// After fmi2Instantiate (or fmi2Reset).
-    Instantiated = 0,
-    /// Between fmi2EnterInitializationMode and fmi2ExitInitializationMode.
-    Initialization = 1,
-    /// Stepping.
-    StepComplete = 2,
-    /// After fmi2Terminate.
-    Terminated = 3,
-    /// After an fmi2Error.
-    Error = 4,
-    /// After an fmi2Fatal: only fmi2FreeInstance remains.
-    Fatal = 5,
-}
-
-impl Mode {
-    fn from_code(c: u8) -> Option<Self> {
-        Some(match c {
-            0 => Mode::Instantiated,
-            1 => Mode::Initialization,
-            2 => Mode::StepComplete,
-            3 => Mode::Terminated,
-            4 => Mode::Error,
-            _ => return None,
-        })
-    }
-}
+pub use traction_fmi_support::{FmuError, FmuResult, Logger, Mode, NullLogger, Status};
 
 /// Everything an FMU state holds (fmi2GetFMUstate): the mode, time,
 /// parameters, inputs and outputs. The variator itself is rebuilt from the
@@ -199,7 +119,10 @@ impl Snapshot {
         if bytes[0] != STATE_VERSION {
             return Err(bad("unknown state version"));
         }
-        let mode = Mode::from_code(bytes[1]).ok_or_else(|| bad("invalid mode"))?;
+        // Every mode but the fatal one is restorable.
+        let mode = Mode::from_code(bytes[1])
+            .filter(|m| *m != Mode::Fatal)
+            .ok_or_else(|| bad("invalid mode"))?;
         let mut pos = HEADER;
         let mut f = || {
             let mut a = [0u8; 8];
@@ -246,15 +169,6 @@ pub struct VariatorFmu {
     variator: Option<ToroidalVariator>,
 }
 
-const GET_MODES: &[Mode] = &[
-    Mode::Initialization,
-    Mode::StepComplete,
-    Mode::Terminated,
-    Mode::Error,
-];
-const PARAM_MODES: &[Mode] = &[Mode::Instantiated, Mode::Initialization];
-const INPUT_MODES: &[Mode] = &[Mode::Instantiated, Mode::Initialization, Mode::StepComplete];
-
 fn regime_code(r: Regime, load: f64) -> i32 {
     if load <= 0.0 {
         return 0;
@@ -289,19 +203,7 @@ impl VariatorFmu {
     }
 
     fn require(&mut self, what: &str, modes: &[Mode]) -> Result<(), FmuError> {
-        if modes.contains(&self.mode) {
-            Ok(())
-        } else if self.mode == Mode::Fatal {
-            Err(FmuError {
-                status: Status::Fatal,
-                message: format!(
-                    "{what}: the instance had a fatal error; only fmi2FreeInstance is allowed"
-                ),
-            })
-        } else {
-            let e = FmuError::error(format!("{what}: not allowed in state {:?}", self.mode));
-            Err(self.fail(e))
-        }
+        self.mode.check(what, modes).map_err(|e| self.fail(e))
     }
 
     /// Enter the error state and hand the error back.
@@ -551,7 +453,7 @@ impl VariatorFmu {
 
     /// fmi2GetReal.
     pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64], log: &mut dyn Logger) -> FmuResult {
-        self.require("fmi2GetReal", GET_MODES)?;
+        self.require("fmi2GetReal", Mode::GET)?;
         self.check_len("fmi2GetReal", vrs.len(), values.len())?;
         let mut status = Status::Ok;
         if self.mode != Mode::Error && vrs.iter().any(|&r| variables::output_index(r).is_some()) {
@@ -592,11 +494,11 @@ impl VariatorFmu {
                 return Err(self.fail(e));
             }
             if var.causality == Causality::Parameter {
-                self.require("fmi2SetReal of a parameter", PARAM_MODES)?;
+                self.require("fmi2SetReal of a parameter", Mode::SET_PARAMETER)?;
                 self.s.params[r as usize - 1] = x;
                 self.variator = None;
             } else {
-                self.require("fmi2SetReal of an input", INPUT_MODES)?;
+                self.require("fmi2SetReal of an input", Mode::SET_INPUT)?;
                 self.s.inputs[(r - vr::OMEGA_IN) as usize] = x;
             }
             self.s.dirty = true;
@@ -611,7 +513,7 @@ impl VariatorFmu {
         values: &mut [i32],
         log: &mut dyn Logger,
     ) -> FmuResult {
-        self.require("fmi2GetInteger", GET_MODES)?;
+        self.require("fmi2GetInteger", Mode::GET)?;
         self.check_len("fmi2GetInteger", vrs.len(), values.len())?;
         let mut status = Status::Ok;
         if self.mode != Mode::Error
@@ -660,7 +562,7 @@ impl VariatorFmu {
                 ));
                 return Err(self.fail(e));
             }
-            self.require("fmi2SetInteger of a parameter", PARAM_MODES)?;
+            self.require("fmi2SetInteger of a parameter", Mode::SET_PARAMETER)?;
             match r {
                 vr::ROLLERS => self.s.rollers = x,
                 vr::FLUID => self.s.fluid = x,
@@ -674,7 +576,7 @@ impl VariatorFmu {
 
     /// fmi2GetBoolean.
     pub fn get_boolean(&mut self, vrs: &[u32], values: &mut [bool]) -> FmuResult {
-        self.require("fmi2GetBoolean", GET_MODES)?;
+        self.require("fmi2GetBoolean", Mode::GET)?;
         self.check_len("fmi2GetBoolean", vrs.len(), values.len())?;
         for (&r, v) in vrs.iter().zip(values.iter_mut()) {
             *v = match r {
@@ -701,7 +603,7 @@ impl VariatorFmu {
                 ));
                 return Err(self.fail(e));
             }
-            self.require("fmi2SetBoolean of a parameter", PARAM_MODES)?;
+            self.require("fmi2SetBoolean of a parameter", Mode::SET_PARAMETER)?;
             if r == vr::MAP {
                 self.s.map = x;
             } else {
@@ -755,16 +657,7 @@ impl VariatorFmu {
 
     /// fmi2SetFMUstate.
     pub fn set_state(&mut self, state: &Snapshot) -> FmuResult {
-        self.require(
-            "fmi2SetFMUstate",
-            &[
-                Mode::Instantiated,
-                Mode::Initialization,
-                Mode::StepComplete,
-                Mode::Terminated,
-                Mode::Error,
-            ],
-        )?;
+        self.require("fmi2SetFMUstate", Mode::NOT_FATAL)?;
         let params_changed = self.s.params != state.params
             || self.s.rollers != state.rollers
             || self.s.fluid != state.fluid

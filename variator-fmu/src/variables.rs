@@ -5,16 +5,10 @@
 //! across all types. Real parameters are VR 1..=[`N_REAL_PARAMS`], Real
 //! inputs [`vr::OMEGA_IN`].., Real outputs [`vr::TORQUE_IN`].. in table order.
 
-/// FMI 2 causality.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Causality {
-    /// `parameter` (variability `fixed`).
-    Parameter,
-    /// `input` (variability `continuous`).
-    Input,
-    /// `output` (`continuous` Reals, `discrete` Enumerations).
-    Output,
-}
+/// FMI 2 causality: `parameter` (variability `fixed`), `input`
+/// (`continuous`), `output` (`continuous` Reals, `discrete` Enumerations).
+pub use traction_fmi_support::xml::Causality;
+pub use traction_fmi_support::xml::{EnumItem, EnumType, Unit};
 
 /// Type and start value of a variable.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,25 +61,22 @@ pub struct Variable {
 }
 
 /// Units: name, exponents of `[kg, m, s, A, K, mol, cd, rad]`, offset.
-pub const UNITS: &[(&str, [i32; 8], f64)] = &[
-    ("m", [0, 1, 0, 0, 0, 0, 0, 0], 0.0),
-    ("rad", [0, 0, 0, 0, 0, 0, 0, 1], 0.0),
-    ("rad/s", [0, 0, -1, 0, 0, 0, 0, 1], 0.0),
-    ("m/s", [0, 1, -1, 0, 0, 0, 0, 0], 0.0),
-    ("N", [1, 1, -2, 0, 0, 0, 0, 0], 0.0),
-    ("N.m", [1, 2, -2, 0, 0, 0, 0, 0], 0.0),
-    ("W", [1, 2, -3, 0, 0, 0, 0, 0], 0.0),
-    ("Pa", [1, -1, -2, 0, 0, 0, 0, 0], 0.0),
-    ("degC", [0, 0, 0, 0, 1, 0, 0, 0], 273.15),
-    ("K", [0, 0, 0, 0, 1, 0, 0, 0], 0.0),
-    ("1", [0; 8], 0.0),
+pub const UNITS: &[Unit] = &[
+    Unit::new("m", [0, 1, 0, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("rad", [0, 0, 0, 0, 0, 0, 0, 1], 0.0),
+    Unit::new("rad/s", [0, 0, -1, 0, 0, 0, 0, 1], 0.0),
+    Unit::new("m/s", [0, 1, -1, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("N", [1, 1, -2, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("N.m", [1, 2, -2, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("W", [1, 2, -3, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("Pa", [1, -1, -2, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("degC", [0, 0, 0, 0, 1, 0, 0, 0], 273.15),
+    Unit::new("K", [0, 0, 0, 0, 1, 0, 0, 0], 0.0),
+    Unit::new("1", [0; 8], 0.0),
 ];
 
-/// An enumeration item: name, value, description.
-pub type EnumItem = (&'static str, i32, &'static str);
-
 /// Enumeration SimpleTypes: name, description, items.
-pub const ENUM_TYPES: &[(&str, &str, &[EnumItem])] = &[
+pub const ENUM_TYPES: &[EnumType] = &[
     (
         "Fluid",
         "Traction fluid",
@@ -841,7 +832,7 @@ mod tests {
     fn every_unit_and_declared_type_exists() {
         for v in VARIABLES {
             match v.kind {
-                Kind::Real { unit, .. } => assert!(UNITS.iter().any(|u| u.0 == unit), "{unit}"),
+                Kind::Real { unit, .. } => assert!(UNITS.iter().any(|u| u.name == unit), "{unit}"),
                 Kind::Enumeration { declared, .. } => {
                     assert!(ENUM_TYPES.iter().any(|t| t.0 == declared))
                 }

@@ -37,24 +37,22 @@ pub unsafe extern "C" fn fmi2Instantiate(
 ) -> Fmi2Component {
     let r = catch_unwind(|| {
         // SAFETY: per the function's contract.
-        let callbacks = if functions.is_null() {
-            None
-        } else {
-            Some(unsafe { *functions })
-        };
+        let callbacks = unsafe { support::callbacks(functions) };
         // SAFETY: NUL-terminated or NULL.
         let name = unsafe { opt_str(instance_name) }.unwrap_or("");
         let mut log = HostLogger {
-            logger: callbacks.and_then(|c| c.logger),
-            env: callbacks.map_or(std::ptr::null_mut(), |c| c.component_environment),
-            name: c_text(
-                if name.is_empty() {
-                    "TractionContact"
-                } else {
-                    name
-                },
-                false,
-            ),
+            // SAFETY: the host's callbacks stay valid until fmi2FreeInstance
+            // (FMI 2.0), and the logger lives in the instance.
+            host: unsafe {
+                HostCallback::new(
+                    callbacks,
+                    if name.is_empty() {
+                        "TractionContact"
+                    } else {
+                        name
+                    },
+                )
+            },
             debug: logging_on != 0,
             enabled: [true; LOG_CATEGORIES.len()],
         };
@@ -84,12 +82,7 @@ pub unsafe extern "C" fn fmi2Instantiate(
             return fail(&mut log, "fmi2Instantiate: fmuGUID is NULL".into());
         };
         match TractionFmu::instantiate(name, guid) {
-            Ok(model) => Box::into_raw(Box::new(Instance {
-                magic: INSTANCE_MAGIC,
-                model,
-                log,
-            }))
-            .cast::<c_void>(),
+            Ok(model) => support::into_handle(INSTANCE_MAGIC, Instance { model, log }),
             Err(m) => fail(&mut log, m),
         }
     });
@@ -106,15 +99,9 @@ pub unsafe extern "C" fn fmi2FreeInstance(c: Fmi2Component) {
         return;
     }
     let _ = catch_unwind(|| {
-        // SAFETY: per contract, c came from Box::into_raw in fmi2Instantiate.
-        let mut b = unsafe { Box::from_raw(c.cast::<Instance>()) };
-        if b.magic != INSTANCE_MAGIC {
-            // Not ours (or freed twice): leak rather than free foreign memory.
-            std::mem::forget(b);
-            return;
-        }
-        b.magic = 0;
-        drop(b);
+        // SAFETY: per contract, c came from fmi2Instantiate; a pointer that is
+        // not ours (or freed twice) is left alone rather than freed.
+        unsafe { support::free_handle::<Instance>(c, INSTANCE_MAGIC) }
     });
 }
 

@@ -6,39 +6,31 @@ use super::*;
 
 /// # Safety
 /// `s` NULL or a state made by this library.
-unsafe fn state_ref<'a>(s: Fmi2FmuState, func: &str) -> Result<&'a mut StateBox, FmuError> {
+unsafe fn state_ref<'a>(s: Fmi2FmuState, func: &str) -> Result<&'a mut Snapshot, FmuError> {
     if s.is_null() {
         return Err(null_arg(func, "FMUstate"));
     }
     // SAFETY: per contract, a state this library allocated.
-    let b = unsafe { &mut *s.cast::<StateBox>() };
-    if b.magic != STATE_MAGIC {
-        return Err(FmuError::error(format!(
-            "{func}: FMUstate was not created by this FMU (or was freed)"
-        )));
-    }
-    Ok(b)
+    unsafe { support::handle_mut(s, STATE_MAGIC) }.ok_or_else(|| not_ours(func))
+}
+
+fn not_ours(func: &str) -> FmuError {
+    FmuError::error(format!(
+        "{func}: FMUstate was not created by this FMU (or was freed)"
+    ))
 }
 
 /// Stores `state` at `*out`, reusing a state already there.
 ///
 /// # Safety
-/// `*out` NULL or a state made by this library.
+/// `out` valid and non-NULL; `*out` NULL or a state made by this library.
 unsafe fn store_state(out: *mut Fmi2FmuState, state: Snapshot, func: &str) -> FmuResult {
-    // SAFETY: out checked non-NULL by callers.
-    let existing = unsafe { *out };
-    if existing.is_null() {
-        let b = Box::new(StateBox {
-            magic: STATE_MAGIC,
-            state,
-        });
-        // SAFETY: out is a valid pointer per contract.
-        unsafe { *out = Box::into_raw(b).cast::<c_void>() };
+    // SAFETY: per contract.
+    if unsafe { support::store_handle(out, STATE_MAGIC, state) } {
+        Ok(Status::Ok)
     } else {
-        // SAFETY: per contract.
-        unsafe { state_ref(existing, func) }?.state = state;
+        Err(not_ours(func))
     }
-    Ok(Status::Ok)
 }
 
 /// `fmi2GetFMUstate`: a copy of the complete instance state; an existing
@@ -82,7 +74,7 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, state: Fmi2FmuState) 
         |i| {
             // SAFETY: per contract.
             let b = unsafe { state_ref(state, f) }?;
-            i.model.set_state(&b.state)
+            i.model.set_state(b)
         },
     )
 }
@@ -110,10 +102,10 @@ pub unsafe extern "C" fn fmi2FreeFMUstate(
             }
             // SAFETY: per contract.
             let p = unsafe { *state };
-            // SAFETY: per contract.
-            unsafe { state_ref(p, f) }?.magic = 0;
-            // SAFETY: p came from Box::into_raw in store_state.
-            drop(unsafe { Box::from_raw(p.cast::<StateBox>()) });
+            // SAFETY: per contract (refused if not ours, then freed).
+            unsafe { state_ref(p, f) }?;
+            // SAFETY: p is a state of this library (checked above).
+            unsafe { support::free_handle::<Snapshot>(p, STATE_MAGIC) };
             // SAFETY: valid pointer per contract.
             unsafe { *state = std::ptr::null_mut() };
             Ok(Status::Ok)
@@ -145,7 +137,7 @@ pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
                 return Err(null_arg(f, "size"));
             }
             // SAFETY: non-NULL, valid per contract.
-            unsafe { *size = TractionFmu::serialize_state(&b.state).len() };
+            unsafe { *size = TractionFmu::serialize_state(b).len() };
             Ok(Status::Ok)
         },
     )
@@ -173,7 +165,7 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(
         |_| {
             // SAFETY: per contract.
             let b = unsafe { state_ref(state, f) }?;
-            let bytes = TractionFmu::serialize_state(&b.state);
+            let bytes = TractionFmu::serialize_state(b);
             if size < bytes.len() {
                 return Err(FmuError::error(format!(
                     "{f}: buffer of {size} bytes, the state needs {}",

@@ -70,16 +70,6 @@ impl TryFrom<i32> for SideSlipSource {
 /// differs from the sum by a few ulp of `t`, far below it.
 const CONTINUITY_TOLERANCE: f64 = 1e-9;
 
-const SETTABLE_PARAM_MODES: &[Mode] = &[Mode::Instantiated, Mode::Initialization];
-const SETTABLE_INPUT_MODES: &[Mode] =
-    &[Mode::Instantiated, Mode::Initialization, Mode::StepComplete];
-const GET_MODES: &[Mode] = &[
-    Mode::Initialization,
-    Mode::StepComplete,
-    Mode::Terminated,
-    Mode::Error,
-];
-
 fn var(vr: u32, func: &str) -> Result<&'static variables::Variable, FmuError> {
     variables::by_vr(vr)
         .ok_or_else(|| FmuError::error(format!("{func}: unknown value reference {vr}")))
@@ -118,22 +108,7 @@ impl TractionFmu {
     }
 
     fn require(&mut self, func: &str, allowed: &[Mode]) -> Result<(), FmuError> {
-        if allowed.contains(&self.mode) {
-            Ok(())
-        } else if self.mode == Mode::Fatal {
-            Err(FmuError {
-                status: Status::Fatal,
-                message: format!(
-                    "{func}: the instance had a fatal error; only fmi2FreeInstance is allowed"
-                ),
-            })
-        } else {
-            let e = FmuError::error(format!(
-                "{func}: not allowed in state {:?} (allowed: {allowed:?})",
-                self.mode
-            ));
-            Err(self.fail(e))
-        }
+        self.mode.check(func, allowed).map_err(|e| self.fail(e))
     }
 
     pub(super) fn physics_parameters(&self) -> Result<physics::Parameters, FmuError> {
@@ -409,16 +384,7 @@ impl CoSimulation for TractionFmu {
     }
 
     fn reset(&mut self) -> FmuResult {
-        self.require(
-            "fmi2Reset",
-            &[
-                Mode::Instantiated,
-                Mode::Initialization,
-                Mode::StepComplete,
-                Mode::Terminated,
-                Mode::Error,
-            ],
-        )?;
+        self.require("fmi2Reset", Mode::NOT_FATAL)?;
         self.drop_contact();
         *self = Self {
             s: Snapshot::start_values(),
@@ -430,7 +396,7 @@ impl CoSimulation for TractionFmu {
     }
 
     fn get_real(&mut self, vrs: &[u32], values: &mut [f64], log: &mut dyn Logger) -> FmuResult {
-        self.require("fmi2GetReal", GET_MODES)?;
+        self.require("fmi2GetReal", Mode::GET)?;
         let mut status = Status::Ok;
         if self.mode != Mode::Error && vrs.iter().any(|&r| is_real_output(r)) {
             status = self.with_update(log)?;
@@ -471,13 +437,13 @@ impl CoSimulation for TractionFmu {
                     ))));
                 }
                 Causality::Parameter => {
-                    self.require("fmi2SetReal of a fixed parameter", SETTABLE_PARAM_MODES)?;
+                    self.require("fmi2SetReal of a fixed parameter", Mode::SET_PARAMETER)?;
                     check_real(F, v, x).map_err(|e| self.fail(e))?;
                     self.s.params[slot.index] = x;
                     self.drop_contact();
                 }
                 Causality::Input => {
-                    self.require("fmi2SetReal of an input", SETTABLE_INPUT_MODES)?;
+                    self.require("fmi2SetReal of an input", Mode::SET_INPUT)?;
                     check_real(F, v, x).map_err(|e| self.fail(e))?;
                     self.s.inputs[slot.index] = x;
                 }
@@ -488,7 +454,7 @@ impl CoSimulation for TractionFmu {
     }
 
     fn get_integer(&mut self, vrs: &[u32], values: &mut [i32], log: &mut dyn Logger) -> FmuResult {
-        self.require("fmi2GetInteger", GET_MODES)?;
+        self.require("fmi2GetInteger", Mode::GET)?;
         let mut status = Status::Ok;
         if self.mode != Mode::Error && vrs.contains(&vr::REGIME) {
             status = self.with_update(log)?;
@@ -527,7 +493,7 @@ impl CoSimulation for TractionFmu {
                     v.name
                 ))));
             }
-            self.require("fmi2SetInteger of a fixed parameter", SETTABLE_PARAM_MODES)?;
+            self.require("fmi2SetInteger of a fixed parameter", Mode::SET_PARAMETER)?;
             check_enum(F, v, x).map_err(|e| self.fail(e))?;
             self.s.enums[slot.index] = x;
             self.drop_contact();
@@ -537,7 +503,7 @@ impl CoSimulation for TractionFmu {
     }
 
     fn get_boolean(&mut self, vrs: &[u32], values: &mut [bool]) -> FmuResult {
-        self.require("fmi2GetBoolean", GET_MODES)?;
+        self.require("fmi2GetBoolean", Mode::GET)?;
         for (&r, v) in vrs.iter().zip(values.iter_mut()) {
             *v = match variables::slot(r) {
                 Some(s) if s.value_type == Type::Boolean => self.s.flags[s.index],
@@ -559,7 +525,7 @@ impl CoSimulation for TractionFmu {
                     "fmi2SetBoolean: value reference {r} is not a Boolean variable of this FMU"
                 ))));
             };
-            self.require("fmi2SetBoolean of a fixed parameter", SETTABLE_PARAM_MODES)?;
+            self.require("fmi2SetBoolean of a fixed parameter", Mode::SET_PARAMETER)?;
             self.s.flags[slot.index] = x;
             self.drop_contact();
             self.s.dirty = true;
@@ -616,16 +582,7 @@ impl CoSimulation for TractionFmu {
     }
 
     fn set_state(&mut self, state: &Snapshot) -> FmuResult {
-        self.require(
-            "fmi2SetFMUstate",
-            &[
-                Mode::Instantiated,
-                Mode::Initialization,
-                Mode::StepComplete,
-                Mode::Terminated,
-                Mode::Error,
-            ],
-        )?;
+        self.require("fmi2SetFMUstate", Mode::NOT_FATAL)?;
         self.s = state.clone();
         self.mode = state.mode;
         self.drop_contact();

@@ -14,57 +14,7 @@ mod tests;
 pub use instance::{SideSlipSource, SpinSource, TractionFmu};
 pub use snapshot::Snapshot;
 
-/// Status of a call, mirroring `fmi2Status`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Status {
-    /// fmi2OK.
-    Ok = 0,
-    /// fmi2Warning.
-    Warning = 1,
-    /// fmi2Discard.
-    Discard = 2,
-    /// fmi2Error.
-    Error = 3,
-    /// fmi2Fatal.
-    Fatal = 4,
-}
-
-/// A failed call: status (Error or Fatal) and the message to log.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{message}")]
-pub struct FmuError {
-    /// fmi2Error or fmi2Fatal.
-    pub status: Status,
-    /// What went wrong, naming the function, variable or quantity.
-    pub message: String,
-}
-
-impl FmuError {
-    /// An fmi2Error with a message.
-    pub fn error(message: impl Into<String>) -> Self {
-        Self {
-            status: Status::Error,
-            message: message.into(),
-        }
-    }
-}
-
-/// Where a model sends warnings (the host's logger behind the C boundary).
-pub trait Logger {
-    /// Logs one message under an FMI log category.
-    fn log(&mut self, status: Status, category: &str, message: &str);
-}
-
-/// A logger that drops everything (tests, benches).
-#[derive(Debug, Default, Clone, Copy)]
-pub struct NullLogger;
-
-impl Logger for NullLogger {
-    fn log(&mut self, _: Status, _: &str, _: &str) {}
-}
-
-/// Result of a model call: `Ok(Status::Ok | Status::Warning)` or an error.
-pub type FmuResult = Result<Status, FmuError>;
+pub use traction_fmi_support::{FmuError, FmuResult, Logger, Mode, NullLogger, Status};
 
 /// One FMI 2 co-simulation slave, safe Rust. The C wrappers of [`crate::ffi`]
 /// call exactly these methods; every method checks that it is allowed in the
@@ -168,33 +118,4 @@ pub trait CoSimulation: Sized {
     /// argument, an unsupported function), as the model's own refusals do;
     /// returns `error` with the status it now has.
     fn enter_error_state(&mut self, error: FmuError) -> FmuError;
-}
-
-/// FMI 2 co-simulation states.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Mode {
-    /// After fmi2Instantiate or fmi2Reset.
-    Instantiated = 0,
-    /// Between fmi2EnterInitializationMode and fmi2ExitInitializationMode.
-    Initialization = 1,
-    /// Initialized; steps may be taken.
-    StepComplete = 2,
-    /// After fmi2Terminate.
-    Terminated = 3,
-    /// After a call returned fmi2Error.
-    Error = 4,
-    /// After a call returned fmi2Fatal.
-    Fatal = 5,
-}
-
-impl Mode {
-    fn from_code(c: u8) -> Option<Self> {
-        Some(match c {
-            0 => Mode::Instantiated,
-            1 => Mode::Initialization,
-            2 => Mode::StepComplete,
-            3 => Mode::Terminated,
-            _ => return None,
-        })
-    }
 }

@@ -252,7 +252,11 @@ impl Snapshot {
             return Err(bad("checksum mismatch"));
         }
         let mut r = Reader { body, pos: 8 };
-        let mode = Mode::from_code(r.byte()).ok_or_else(|| bad("mode"))?;
+        // A saved state is never in the error or fatal mode (fmi2GetFMUstate
+        // is refused there).
+        let mode = Mode::from_code(r.byte())
+            .filter(|m| !matches!(m, Mode::Error | Mode::Fatal))
+            .ok_or_else(|| bad("mode"))?;
         let mut s = Self::start_values();
         s.mode = mode;
         s.start_time = r.real();

@@ -12,29 +12,9 @@ mod table;
 mod types;
 
 pub use table::VARIABLES;
-pub use types::{ENUM_TYPES, EnumItem, EnumType, REAL_TYPES, UNITS, Unit};
+pub use types::{ENUM_TYPES, EnumItem, EnumType, REAL_TYPES, RealType, UNITS, Unit};
 
-/// FMI 2 causality.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Causality {
-    /// `parameter`.
-    Parameter,
-    /// `input`.
-    Input,
-    /// `output`.
-    Output,
-}
-
-/// FMI 2 variability.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Variability {
-    /// `fixed`: set before initialization ends, constant afterwards.
-    Fixed,
-    /// `discrete`: changes only at communication points (Integer, Enumeration).
-    Discrete,
-    /// `continuous` (Real only).
-    Continuous,
-}
+pub use traction_fmi_support::xml::{Causality, Variability};
 
 /// Type and start value of a variable.
 #[derive(Debug, Clone, Copy, PartialEq)]

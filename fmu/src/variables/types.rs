@@ -1,88 +1,26 @@
 //! Units and SimpleTypes of the interface (UnitDefinitions, TypeDefinitions).
 
-/// A unit of UnitDefinitions: name, SI base-unit exponents
-/// `[kg, m, s, A, K, mol, cd, rad]` and offset.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Unit {
-    /// Unit name as used in `unit=`.
-    pub name: &'static str,
-    /// Exponents of kg, m, s, A, K, mol, cd, rad.
-    pub exponents: [i32; 8],
-    /// Offset to the SI base unit (degC: 273.15).
-    pub offset: f64,
-}
+pub use traction_fmi_support::xml::{EnumItem, EnumType, RealType, Unit};
 
-/// Units of the interface.
+/// Units of the interface: name, exponents of `[kg, m, s, A, K, mol, cd, rad]`, offset.
 pub const UNITS: &[Unit] = &[
-    Unit {
-        name: "N",
-        exponents: [1, 1, -2, 0, 0, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "N.m",
-        exponents: [1, 2, -2, 0, 0, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "m",
-        exponents: [0, 1, 0, 0, 0, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "Pa",
-        exponents: [1, -1, -2, 0, 0, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "m/s",
-        exponents: [0, 1, -1, 0, 0, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "rad",
-        exponents: [0, 0, 0, 0, 0, 0, 0, 1],
-        offset: 0.0,
-    },
-    Unit {
-        name: "rad/s",
-        exponents: [0, 0, -1, 0, 0, 0, 0, 1],
-        offset: 0.0,
-    },
-    Unit {
-        name: "W",
-        exponents: [1, 2, -3, 0, 0, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "degC",
-        exponents: [0, 0, 0, 0, 1, 0, 0, 0],
-        offset: 273.15,
-    },
-    Unit {
-        name: "K",
-        exponents: [0, 0, 0, 0, 1, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "W/(m.K)",
-        exponents: [1, 1, -3, 0, -1, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "1/K",
-        exponents: [0, 0, 0, 0, -1, 0, 0, 0],
-        offset: 0.0,
-    },
-    Unit {
-        name: "1",
-        exponents: [0; 8],
-        offset: 0.0,
-    },
+    Unit::new("N", [1, 1, -2, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("N.m", [1, 2, -2, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("m", [0, 1, 0, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("Pa", [1, -1, -2, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("m/s", [0, 1, -1, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("rad", [0, 0, 0, 0, 0, 0, 0, 1], 0.0),
+    Unit::new("rad/s", [0, 0, -1, 0, 0, 0, 0, 1], 0.0),
+    Unit::new("W", [1, 2, -3, 0, 0, 0, 0, 0], 0.0),
+    Unit::new("degC", [0, 0, 0, 0, 1, 0, 0, 0], 273.15),
+    Unit::new("K", [0, 0, 0, 0, 1, 0, 0, 0], 0.0),
+    Unit::new("W/(m.K)", [1, 1, -3, 0, -1, 0, 0, 0], 0.0),
+    Unit::new("1/K", [0, 0, 0, 0, -1, 0, 0, 0], 0.0),
+    Unit::new("1", [0; 8], 0.0),
 ];
 
 /// Real SimpleTypes: name, quantity, unit.
-pub const REAL_TYPES: &[(&str, &str, &str)] = &[
+pub const REAL_TYPES: &[RealType] = &[
     ("Force", "Force", "N"),
     ("Torque", "Torque", "N.m"),
     ("Length", "Length", "m"),
@@ -97,11 +35,6 @@ pub const REAL_TYPES: &[(&str, &str, &str)] = &[
     ("TemperatureCoefficient", "TemperatureCoefficient", "1/K"),
     ("Dimensionless", "Dimensionless", "1"),
 ];
-
-/// An enumeration item: name, value, description.
-pub type EnumItem = (&'static str, i32, &'static str);
-/// An enumeration SimpleType: name, description, items.
-pub type EnumType = (&'static str, &'static str, &'static [EnumItem]);
 
 /// Enumeration SimpleTypes of the interface.
 pub const ENUM_TYPES: &[EnumType] = &[
