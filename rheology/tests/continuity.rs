@@ -66,12 +66,11 @@ fn half_contact_without_longitudinal_slip_matches_full_integration() {
     // J1 = 0: `evaluate` integrates only Y ≥ 0 and mirrors (J4 = 0, J5 and J6
     // doubled). At J1 = ±1e-15 the whole contact is integrated, with the same
     // panel decisions (mirrored panels give the same change). The two differ
-    // only by the strip integrator's discrete choices (step counts, the
-    // start of unloading), which move the result by up to 2.5e-7 under a
-    // change of J1 by 1e-16 alone (k = 0.2, J = (·, −1.5, 8), ΔX = 0.1, with
-    // or without the half-contact rule; ≤ 8e-9 elsewhere here). Bound
-    // tol/100: ≥ 40× that noise, while a wrong parity or factor shows as
-    // O(0.1). Spin from slip-dominated to high, with ΔX and gy ≠ 1.
+    // only by round-off and by the strip integrator's discrete choices (step
+    // counts, the start of unloading) under a change of J1 by 1e-15: measured
+    // ≤ 5e-16 on every case here. Bound tol/100, far above that, while a
+    // wrong parity or factor shows as O(0.1). Spin from slip-dominated to
+    // high, with ΔX and gy ≠ 1.
     for &(k, j2, j3, dx, gy) in &[
         (5.0, 3.368, 25.816, 0.0, 1.0),
         (1.0, 0.96, 2.28, 0.0, 1.0),
