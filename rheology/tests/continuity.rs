@@ -66,12 +66,11 @@ fn half_contact_without_longitudinal_slip_matches_full_integration() {
     // J1 = 0: `evaluate` integrates only Y ≥ 0 and mirrors (J4 = 0, J5 and J6
     // doubled). At J1 = ±1e-15 the whole contact is integrated, with the same
     // panel decisions (mirrored panels give the same change). The two differ
-    // only by the strip integrator's discrete choices (step counts, the
-    // start of unloading), which move the result by up to 2.5e-7 under a
-    // change of J1 by 1e-16 alone (k = 0.2, J = (·, −1.5, 8), ΔX = 0.1, with
-    // or without the half-contact rule; ≤ 8e-9 elsewhere here). Bound
-    // tol/100: ≥ 40× that noise, while a wrong parity or factor shows as
-    // O(0.1). Spin from slip-dominated to high, with ΔX and gy ≠ 1.
+    // only by round-off and by the strip integrator's discrete choices (step
+    // counts, the start of unloading) under a change of J1 by 1e-15: measured
+    // ≤ 5e-16 on every case here. Bound tol/100, far above that, while a
+    // wrong parity or factor shows as O(0.1). Spin from slip-dominated to
+    // high, with ΔX and gy ≠ 1.
     for &(k, j2, j3, dx, gy) in &[
         (5.0, 3.368, 25.816, 0.0, 1.0),
         (1.0, 0.96, 2.28, 0.0, 1.0),
@@ -103,5 +102,57 @@ fn half_contact_without_longitudinal_slip_matches_full_integration() {
                 );
             }
         }
+    }
+}
+
+#[test]
+fn outputs_without_side_slip_are_continuous_at_round_off() {
+    // Lines without side slip (J2 = 0, ΔX = 0): the two contacts of a
+    // toroidal variator's roller at 1 % creep along the roller speed (J1 and
+    // J3 move together), 400 points 4–5e-10 of J1 apart, tol 1e-4. The spin
+    // pole's strip (an edge of the initial panels) has a = a0 − J3·Y = 0 up
+    // to an ulp of a0 there, and on the second line it stays elastic to the
+    // outlet with Z(c) = 0 (a root of the yield quartic at the outlet).
+    // Its a left as 0 or ± an ulp at random moved J4..J6 up and down by up
+    // to 1.1e-9 (first line; second differences 1.07e-9), and its yield
+    // point iterated to either side of the outlet's threshold at random
+    // (the Halley search before its outlet test) flipped its flow topology
+    // and the panels' decisions with it (second line: 1.8e-6): steps that a
+    // root solve on the outputs cannot pass (the variator's roller balance
+    // asks for 1e-12 of the torques). A smooth stretch gives |f''|·h² ≈
+    // 1e-18 plus the round-off of J4..J6, ≈ 1e-15; measured ≤ 2.2e-15,
+    // bound 1e-12 (docs/decisions/0089).
+    let lines = [
+        (
+            2.4832747188477615,
+            [5.046280358842363, 0.0, -8.574996126138311],
+            [-1.0, 0.0, 0.023],
+            4.64e-10,
+        ),
+        (
+            1.9399750125524438,
+            [-3.818647161930821, 0.0, -4.971429718088984],
+            [-1.0, 0.0, 0.0213],
+            4.10e-10,
+        ),
+    ];
+    let acc = Accuracy::new(1e-4).unwrap();
+    for (k, p, d, h) in lines {
+        let v: Vec<[f64; 3]> = (0..400)
+            .map(|i| {
+                let s = f64::from(i) * h;
+                let inp = Inputs::new(k, p[0] + s * d[0], p[1], p[2] + s * d[2]).unwrap();
+                let o = evaluate(&inp, Model::ElasticPlastic, acc).unwrap();
+                [o.j4, o.j5, o.j6]
+            })
+            .collect();
+        let mut m: f64 = 0.0;
+        for w in v.windows(3) {
+            for ((a, b), c) in w[0].iter().zip(&w[1]).zip(&w[2]) {
+                m = m.max((c - 2.0 * b + a).abs());
+            }
+        }
+        println!("k = {k}, from {p:?}: max |Δ²| = {m:.2e}");
+        assert!(m <= 1e-12, "k = {k} {p:?}: {m:.3e}");
     }
 }

@@ -8,8 +8,9 @@
 //! * elastic segments: Z is a polynomial in X (closed form, integrated
 //!   exactly); first yield or reloading is the first root of
 //!   the quartic |Z(X)|² − L(X)², bracketed exactly between the turning
-//!   points of its cubic factor, then safeguarded Newton (stopped once its
-//!   quadratic error estimate is 1e-3·s_step⁴ of c);
+//!   points of its cubic factor, started by Halley steps on that cubic,
+//!   then safeguarded Halley (stopped once its cubic error estimate is
+//!   1e-3·s_step⁴ of c);
 //! * plastic segments: Z = L·n with the unit vector n rotating at
 //!   dn/ds = (2/3)(v·t)·t, t ⟂ n (Prandtl–Reuss consistency; the 1/√(c−X)
 //!   singularity of dθ/dX is absorbed by dX/ds = c·cos s; with an
@@ -74,6 +75,17 @@ pub(super) fn smooth_step(t: f64) -> f64 {
     let t = t.clamp(0.0, 1.0);
     t * t * (3.0 - 2.0 * t)
 }
+
+/// |a| = |a0 − J3·Y| below which a strip is the spin pole's (relative to
+/// |a0|; a few ulps of a0). Its slip is then purely lateral and reverses at
+/// vy = 0, and its discretised strip sums are not the limit of those at
+/// a → 0 (where the slip direction turns by π within ≈ |a/q2| of vy = 0
+/// and the plastic steps are set by that turn): with J = (5.05, 0, −8.57)
+/// at k = 2.48, tol 1e-4, ∫Zy dX at a = 4.4e-16 (1 ulp of a0) was
+/// 4.0e-7 relative below its value at a = 0, which took J4..J6 up and down
+/// by up to 1.1e-9 between inputs 5e-10 apart, at random along a line of
+/// inputs (tests/continuity.rs; docs/decisions/0089).
+const POLE_SNAP: f64 = 8.0 * f64::EPSILON;
 
 /// Largest number of elastic ↔ plastic switches per strip.
 const MAX_SWITCH: usize = 16;
@@ -153,15 +165,6 @@ impl Strip {
             z0.0 + self.a * e,
             z0.1 + (self.b1 + self.q2 * x0) * e + 0.5 * self.q2 * e * e,
         )
-    }
-
-    /// f = |Z|² − L² and df/dX along an elastic segment.
-    #[inline]
-    fn f_el(&self, x0: f64, z0: (f64, f64), x: f64) -> (f64, f64) {
-        let z = self.z_el(x0, z0, x);
-        let f = z.0 * z.0 + z.1 * z.1 - 2.25 * (self.c * self.c - x * x);
-        let fp = 2.0 * (z.0 * self.a + z.1 * self.vy(x)) + 4.5 * x;
-        (f, fp)
     }
 
     /// Exact integrals of an elastic segment from x0 to x1.
@@ -289,7 +292,8 @@ impl Strip {
             let xy = self.find_yield(x0, z0, steps.0);
             acc += self.el_sums(x0, z0, xy);
             rec(Event::Elastic { x0, z0, x1: xy });
-            if xy >= c * (1.0 - 1e-15) {
+            // c exactly where the crossing is within `OUTLET_GAP` of it.
+            if xy >= c {
                 ends_elastic = 1;
                 break;
             }
@@ -359,11 +363,19 @@ impl Scaled {
         Scaled { gy, ..self }
     }
 
-    /// The strip at Y: elastic rates (a, gy·(b1 + q2·X)).
+    /// The strip at Y: elastic rates (a, gy·(b1 + q2·X)), a = a0 − J3·Y
+    /// taken as 0 within [`POLE_SNAP`] of a0 (the spin pole's strip, an
+    /// edge of the initial panels at Y = sin(asin(a0/J3)), where the
+    /// rounding of Y leaves a = 0 or ± an ulp of a0 at random).
     pub(crate) fn strip(&self, y: f64) -> Strip {
+        let a = self.a0 - self.j3 * y;
         Strip {
             c: (1.0 - y * y).max(0.0).sqrt(),
-            a: self.a0 - self.j3 * y,
+            a: if a.abs() <= POLE_SNAP * self.a0.abs() {
+                0.0
+            } else {
+                a
+            },
             b1: self.gy * self.b1,
             q2: self.gy * self.q2,
             gy: self.gy,
