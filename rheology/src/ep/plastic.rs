@@ -140,9 +140,9 @@ const KAPPA_H_LONG: f64 = 0.75;
 /// fifth-order rule (`Strip::rk5`, real stability interval 3.39): at the
 /// longer s-step where it holds there, else at the s-step where it holds
 /// there, instead of RK4 at the s-step with the graded start; in
-/// `evaluate` only (docs/decisions/0091: at tol 1e-3 cases a, h −4.2 /
-/// −1.9 %, at 1e-2 h, s, a −20 / −14 / −8.5 %, 307 cases −5.4 / −2.9 /
-/// −1.9 % at 1e-2 / 1e-3 / 1e-4, worst error/tol of `cargo xtask ep-sets`
+/// `evaluate` only (docs/decisions/0091: at tol 1e-3 cases a, h −4.4 /
+/// −1.9 %, at 1e-2 h, s, a −20 / −14 / −8.9 %, 307 cases −5.5 / −2.9 /
+/// −2.0 % at 1e-2 / 1e-3 / 1e-4, worst error/tol of `cargo xtask ep-sets`
 /// on 62 seeds unchanged except 0.241 → 0.271 at 1e-4 (others); 2.4 and
 /// 3.0–3.2 measured alike, 2.8 keeps a margin below the stability limit).
 /// The fixed-resolution reference (`Strip::integrate`) does not use it.
