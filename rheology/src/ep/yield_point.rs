@@ -146,9 +146,12 @@ impl Strip {
                     let g = p1 + e * (p2 + e * (p3 + e * p4));
                     let gp = p2 + e * (2.0 * p3 + e * 3.0 * p4);
                     let gpp = 2.0 * p3 + e * 6.0 * p4;
-                    let d = g / gp;
-                    let den = 1.0 - 0.5 * d * gpp / gp;
-                    let xn = start - if den >= 0.5 { d / den } else { d };
+                    // Halley's d/(1 − d·g''/(2g')), d = g/g', as one
+                    // division; Newton's step where that denominator is
+                    // below 1/2.
+                    let gp2 = gp * gp;
+                    let q = 2.0 * gp2 - g * gpp;
+                    let xn = start - if q >= gp2 { 2.0 * g * gp / q } else { g / gp };
                     if xn > lo && xn < xj {
                         start = xn;
                     } else {
@@ -171,7 +174,10 @@ impl Strip {
     /// Halley's step dx = d/(1 − d·f''/(2f')), d = f/f', leaves an error
     /// ≈ |3f''² − 2f'·f'''|/(12f'²)·|d|³ (cubic convergence); where its
     /// denominator is below 1/2 (far from the root) the Newton step is taken
-    /// instead, whose error is ≈ |f''/(2f')|·d².
+    /// instead, whose error is ≈ |f''/(2f')|·d². Both with one division
+    /// (Halley's as 2f·f'/(2f'² − f·f''), the error tests multiplied out):
+    /// three divisions made the bench cases up to 4 % slower in wall time
+    /// at the same instruction count (docs/decisions/0089).
     fn refine(
         &self,
         x0: f64,
@@ -204,19 +210,26 @@ impl Strip {
             }
             let fp = p[1] + e * (d2 + e * (d3 + e * d4));
             let fpp = d2 + e * (s3 + e * s4);
-            let d = f / fp;
-            let den = 1.0 - 0.5 * d * fpp / fp;
-            let halley = den >= 0.5;
-            let xn = if halley { x - d / den } else { x - d };
+            // One division per step (Halley's d/(1 − d·f''/(2f')) as
+            // 2f·f'/(2f'² − f·f''), its error estimate multiplied out).
+            let fp2 = fp * fp;
+            let q = 2.0 * fp2 - f * fpp;
+            let halley = q >= fp2;
+            let xn = if halley {
+                x - 2.0 * f * fp / q
+            } else {
+                x - f / fp
+            };
             let inside = xn > lo && xn < hi && xn.is_finite();
             if inside {
                 let scale = self.c.max(lo.abs());
+                let f2 = f * f;
                 let done = if halley {
                     let fppp = s3 + e * t4;
-                    (3.0 * fpp * fpp - 2.0 * fp * fppp).abs() * (d * d * d).abs()
-                        <= 12.0 * root_tol * scale * fp * fp
+                    (3.0 * fpp * fpp - 2.0 * fp * fppp).abs() * (f2 * f.abs())
+                        <= 12.0 * root_tol * scale * fp2 * fp2 * fp.abs()
                 } else {
-                    (fpp * d * d).abs() <= 2.0 * root_tol * scale * fp.abs()
+                    fpp.abs() * f2 <= 2.0 * root_tol * scale * fp2 * fp.abs()
                 };
                 if done {
                     return xn;
