@@ -961,42 +961,27 @@ impl Strip {
         n: (f64, f64),
         acc: &mut StripSums,
         allow_unload: bool,
-        (s_step, nsteps, h): (f64, usize, f64),
+        steps: (f64, usize, f64),
         rec: &mut impl FnMut(Event),
     ) -> PlasticEnd {
+        let (s_step, _, h) = steps;
         let a_h = TURN_PER_STEP * s_step;
         let (s2, c2) = sin_cos_small(0.5 * h);
-        let mut p = PState {
-            sn,
-            cs,
-            nx: n.0,
-            ny: n.1,
-            acc: StripSums::default(),
-        };
-        for i in 1..=nsteps {
-            let mut q = match self.etd(&p, h, c2, s2) {
-                Some(q) => q,
-                None => {
-                    // RK4 steps of at most the s-step.
-                    let m = (h / s_step).ceil().max(1.0);
-                    let hs = h / m;
-                    let (s2s, c2s) = sin_cos_small(0.5 * hs);
-                    let mut q = p;
-                    for _ in 0..m as usize {
-                        q = self.advance::<true>(&q, hs, c2s, s2s, a_h, None);
-                    }
-                    q
+        let step = |p: &PState| match self.etd(p, h, c2, s2) {
+            Some(q) => q,
+            None => {
+                // RK4 steps of at most the s-step.
+                let m = (h / s_step).ceil().max(1.0);
+                let hs = h / m;
+                let (s2s, c2s) = sin_cos_small(0.5 * hs);
+                let mut q = *p;
+                for _ in 0..m as usize {
+                    q = self.advance::<true>(&q, hs, c2s, s2s, a_h, None);
                 }
-            };
-            let last = i == nsteps;
-            let step = (h, last, allow_unload, a_h);
-            if let Some(end) = self.step_end::<true>(&p, &mut q, step, acc, rec) {
-                return end;
+                q
             }
-            p = q;
-        }
-        *acc += p.acc;
-        PlasticEnd::Outlet
+        };
+        self.equal_steps::<true>((sn, cs, n), acc, allow_unload, steps, rec, step)
     }
 
     /// [`Strip::plastic`] on a segment by `nsteps` steps of length h of the
@@ -1011,11 +996,30 @@ impl Strip {
         n: (f64, f64),
         acc: &mut StripSums,
         allow_unload: bool,
-        (s_step, nsteps, h): (f64, usize, f64),
+        steps: (f64, usize, f64),
         rec: &mut impl FnMut(Event),
     ) -> PlasticEnd {
-        let a_h = TURN_PER_STEP * s_step;
+        let h = steps.2;
         let (s4, c4) = sin_cos_small(0.25 * h);
+        let step = |p: &PState| self.rk5::<ISO>(p, h, c4, s4);
+        self.equal_steps::<ISO>((sn, cs, n), acc, allow_unload, steps, rec, step)
+    }
+
+    /// The plastic segment from (sn, cs) with direction n in `nsteps` equal
+    /// steps of length h taken by `step` ([`Strip::plastic_etd`],
+    /// [`Strip::plastic_rk5`]), each followed by the unloading check and
+    /// location of [`Strip::step_end`].
+    #[inline(always)]
+    fn equal_steps<const ISO: bool>(
+        &self,
+        (sn, cs, n): (f64, f64, (f64, f64)),
+        acc: &mut StripSums,
+        allow_unload: bool,
+        (s_step, nsteps, h): (f64, usize, f64),
+        rec: &mut impl FnMut(Event),
+        step: impl Fn(&PState) -> PState,
+    ) -> PlasticEnd {
+        let a_h = TURN_PER_STEP * s_step;
         let mut p = PState {
             sn,
             cs,
@@ -1024,9 +1028,9 @@ impl Strip {
             acc: StripSums::default(),
         };
         for i in 1..=nsteps {
-            let mut q = self.rk5::<ISO>(&p, h, c4, s4);
-            let step = (h, i == nsteps, allow_unload, a_h);
-            if let Some(end) = self.step_end::<ISO>(&p, &mut q, step, acc, rec) {
+            let mut q = step(&p);
+            let end = (h, i == nsteps, allow_unload, a_h);
+            if let Some(end) = self.step_end::<ISO>(&p, &mut q, end, acc, rec) {
                 return end;
             }
             p = q;
