@@ -3,6 +3,8 @@
 //! J space (no jumps from discretisation choices).
 #![allow(clippy::unwrap_used)] // functions outside #[test] fns too: a failed unwrap is a failed test
 
+mod common;
+
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, evaluate};
 
@@ -136,22 +138,8 @@ fn outputs_without_side_slip_are_continuous_at_round_off() {
             4.10e-10,
         ),
     ];
-    let acc = Accuracy::new(1e-4).unwrap();
     for (k, p, d, h) in lines {
-        let v: Vec<[f64; 3]> = (0..400)
-            .map(|i| {
-                let s = f64::from(i) * h;
-                let inp = Inputs::new(k, p[0] + s * d[0], p[1], p[2] + s * d[2]).unwrap();
-                let o = evaluate(&inp, Model::ElasticPlastic, acc).unwrap();
-                [o.j4, o.j5, o.j6]
-            })
-            .collect();
-        let mut m: f64 = 0.0;
-        for w in v.windows(3) {
-            for ((a, b), c) in w[0].iter().zip(&w[1]).zip(&w[2]) {
-                m = m.max((c - 2.0 * b + a).abs());
-            }
-        }
+        let m = common::max_second_difference(k, p, d, h, 400, 1e-4);
         println!("k = {k}, from {p:?}: max |Δ²| = {m:.2e}");
         assert!(m <= 1e-12, "k = {k} {p:?}: {m:.3e}");
     }
