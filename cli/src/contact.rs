@@ -218,6 +218,20 @@ impl ModelOptions {
     }
 }
 
+/// Warns on stderr when row `row` (0-based) of `table` was evaluated with a
+/// report fluid's correlation outside its data envelope (the envelope rule
+/// allowed it: extrapolated or clamped).
+pub fn warn_outside_envelope(table: &Table, row: usize, e: &Evaluation) {
+    if e.outside_envelope.any() {
+        eprintln!(
+            "warning: {}: row {}: fluid correlation outside its data envelope ({:?})",
+            table.source_name,
+            row + 1,
+            e.outside_envelope
+        );
+    }
+}
+
 /// A report fluid by its CLI name.
 pub fn report_fluid(name: &str, rule: EnvelopeRule, spin_peak: bool) -> Result<Fluid, String> {
     let f = match name {
@@ -402,14 +416,7 @@ pub fn run(args: ContactArgs) -> Result<(), CliError> {
     let mut results = Vec::with_capacity(table.len());
     for row in 0..table.len() {
         let e = solve_row(&table, row, &opts, &args.model)?;
-        if e.outside_envelope.any() {
-            eprintln!(
-                "warning: {}: row {}: fluid correlation outside its data envelope ({:?})",
-                table.source_name,
-                row + 1,
-                e.outside_envelope
-            );
-        }
+        warn_outside_envelope(&table, row, &e);
         results.push(e);
     }
     let mut w = TableWriter::create(&args.output, &output_headers(&table, &OUTPUT_COLUMNS))?;

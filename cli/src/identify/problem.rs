@@ -6,7 +6,7 @@ use traction_contact::{
 };
 
 use super::params::{Initial, ParameterSpec, Trial};
-use crate::contact::{ModelOptions, report_fluid, thermal_columns};
+use crate::contact::{ModelOptions, report_fluid, thermal_columns, warn_outside_envelope};
 use crate::error::{CliError, chain};
 use crate::table::Table;
 
@@ -245,14 +245,7 @@ pub(super) fn read_points(
                 let mut s = state;
                 (s.slip, s.side_slip, s.spin) = (0.0, 0.0, 0.0);
                 let e = c.evaluate(&s).map_err(|e| table.row_error(row, e))?;
-                if e.outside_envelope.any() {
-                    eprintln!(
-                        "warning: {}: row {}: fluid correlation outside its data envelope ({:?})",
-                        table.source_name,
-                        row + 1,
-                        e.outside_envelope
-                    );
-                }
+                warn_outside_envelope(table, row, &e);
                 // Given m, μ cells override the correlation (as in `traction
                 // contact`: the values at the inlet, the fluid supplying the
                 // temperature dependence and film of the thermal model).
