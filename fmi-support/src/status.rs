@@ -3,6 +3,8 @@
 //! The C boundary ([`crate::ffi`]) turns a [`Status`] into an `fmi2Status`
 //! and an [`FmuError`] into a logged message.
 
+use crate::xml::{LOG_STATUS_ERROR, LOG_STATUS_FATAL, LOG_STATUS_WARNING};
+
 /// Status of a call, mirroring `fmi2Status` (ordered by severity).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Status {
@@ -23,9 +25,9 @@ impl Status {
     /// `logStatusFatal`, `logStatusWarning`, else `logStatusError`.
     pub fn category(self) -> &'static str {
         match self {
-            Status::Fatal => "logStatusFatal",
-            Status::Warning => "logStatusWarning",
-            _ => "logStatusError",
+            Status::Fatal => LOG_STATUS_FATAL.0,
+            Status::Warning => LOG_STATUS_WARNING.0,
+            _ => LOG_STATUS_ERROR.0,
         }
     }
 }

@@ -56,6 +56,25 @@ pub type EnumType = (&'static str, &'static str, &'static [EnumItem]);
 /// A log category: name, description.
 pub type LogCategory = (&'static str, &'static str);
 
+/// The log category of warnings ([`crate::Status::category`] of
+/// [`crate::Status::Warning`]).
+pub const LOG_STATUS_WARNING: LogCategory = (
+    "logStatusWarning",
+    "Warnings: a model limitation that applies to the current inputs",
+);
+/// The log category of errors ([`crate::Status::category`] of
+/// [`crate::Status::Error`] and [`crate::Status::Discard`]).
+pub const LOG_STATUS_ERROR: LogCategory = (
+    "logStatusError",
+    "Errors: invalid calls, values or parameters",
+);
+/// The log category of fatal errors ([`crate::Status::category`] of
+/// [`crate::Status::Fatal`]).
+pub const LOG_STATUS_FATAL: LogCategory = (
+    "logStatusFatal",
+    "Fatal errors: internal failures; only fmi2FreeInstance may follow",
+);
+
 /// FMI 2 causality of a variable.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Causality {

@@ -6,8 +6,8 @@
 //! binary checks it in `fmi2Instantiate`.
 
 use traction_fmi_support::xml::{
-    Document, LogCategory, XmlResult, XmlWriter, boolean_element, enumeration_element,
-    real_element, write_scalar_variable,
+    Document, LOG_STATUS_ERROR, LOG_STATUS_FATAL, LOG_STATUS_WARNING, LogCategory, XmlResult,
+    XmlWriter, boolean_element, enumeration_element, real_element, write_scalar_variable,
 };
 
 pub use traction_fmi_support::xml::fnv1a_128;
@@ -18,20 +18,13 @@ use crate::variables::{Causality, ENUM_TYPES, Kind, REAL_TYPES, UNITS, VARIABLES
 /// `binaries/linux64/TractionContact.so` and `binaries/win64/TractionContact.dll`.
 pub const MODEL_IDENTIFIER: &str = "TractionContact";
 
-/// Log categories declared in the XML and accepted by fmi2SetDebugLogging.
+/// Log categories declared in the XML and accepted by fmi2SetDebugLogging:
+/// the three of the statuses (traction-fmi-support's, the categories
+/// `Status::category` names), then `logAll`.
 pub const LOG_CATEGORIES: &[LogCategory] = &[
-    (
-        "logStatusWarning",
-        "Warnings: a model limitation that applies to the current inputs",
-    ),
-    (
-        "logStatusError",
-        "Errors: invalid calls, values or parameters",
-    ),
-    (
-        "logStatusFatal",
-        "Fatal errors: internal failures; only fmi2FreeInstance may follow",
-    ),
+    LOG_STATUS_WARNING,
+    LOG_STATUS_ERROR,
+    LOG_STATUS_FATAL,
     (
         "logAll",
         "Every message, including a trace of the FMI calls",
