@@ -294,25 +294,27 @@ impl Thermal {
             Film::HamrockDowson {
                 viscosity,
                 pressure_viscosity,
-            } => {
-                VISCOSITY_RANGE.check("inlet viscosity η₀", viscosity)?;
-                PRESSURE_VISCOSITY_RANGE
-                    .check("pressure–viscosity coefficient α", pressure_viscosity)?;
             }
-            Film::HamrockDowsonInletHeated {
+            | Film::HamrockDowsonInletHeated {
                 viscosity,
                 pressure_viscosity,
-                viscosity_temperature,
+                ..
             } => {
                 VISCOSITY_RANGE.check("inlet viscosity η₀", viscosity)?;
                 PRESSURE_VISCOSITY_RANGE
                     .check("pressure–viscosity coefficient α", pressure_viscosity)?;
-                VISCOSITY_TEMPERATURE_RANGE.check(
-                    "temperature–viscosity coefficient β_η of the inlet",
-                    viscosity_temperature,
-                )?;
             }
             Film::FromFluid | Film::FromFluidInletHeated => {}
+        }
+        if let Film::HamrockDowsonInletHeated {
+            viscosity_temperature,
+            ..
+        } = self.film
+        {
+            VISCOSITY_TEMPERATURE_RANGE.check(
+                "temperature–viscosity coefficient β_η of the inlet",
+                viscosity_temperature,
+            )?;
         }
         if let Some(t) = self.mu_rise_scale {
             RISE_SCALE_RANGE.check("temperature scale T* of μ", t)?;
