@@ -22,6 +22,16 @@ use crate::{ReproduceError, Row};
 /// Legend of the thermal series in the figures.
 pub const SERIES_NAME: &str = "thermal J+T (one parameter set per fluid)";
 
+/// The thermal model's line on a figure: legend [`SERIES_NAME`], colour 3.
+fn thermal_line(points: Vec<(f64, f64)>) -> Series {
+    Series {
+        name: SERIES_NAME.into(),
+        style: Style::Line,
+        color: 3,
+        points,
+    }
+}
+
 fn err(what: &str, e: impl std::fmt::Display) -> ReproduceError {
     ReproduceError::Model {
         context: format!("{what} (thermal)"),
@@ -380,12 +390,7 @@ pub fn appendix_vi_series(figures: &mut [Figure]) -> Result<(), ReproduceError> 
             .collect::<Result<_, ReproduceError>>()?;
         let tag = format!("(trace {tr},");
         if let Some(f) = figures.iter_mut().find(|f| f.title.contains(&tag)) {
-            f.series.push(Series {
-                name: SERIES_NAME.into(),
-                style: Style::Line,
-                color: 3,
-                points: line,
-            });
+            f.series.push(thermal_line(line));
         }
     }
     Ok(())
@@ -461,12 +466,7 @@ pub fn appendix_vii_a_series(figures: &mut [Figure]) -> Result<(), ReproduceErro
                 Ok((dv, vii_point(k, m, mu, 0.0, dv, None)?.traction_y))
             })
             .collect::<Result<_, ReproduceError>>()?;
-        f.series.push(Series {
-            name: SERIES_NAME.into(),
-            style: Style::Line,
-            color: 3,
-            points: line,
-        });
+        f.series.push(thermal_line(line));
     }
     Ok(())
 }
