@@ -92,6 +92,18 @@ fn stiffness_ratio_column() {
     );
 }
 
+/// The J4, J5, J6 cells of each row of `jt` output whose input columns are
+/// `k,J1,J2,J3`.
+fn j4_j5_j6(out: &str) -> Vec<[f64; 3]> {
+    out.lines()
+        .skip(1)
+        .map(|l| {
+            let c: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+            [c[4], c[5], c[6]]
+        })
+        .collect()
+}
+
 #[test]
 fn map_option_agrees_with_direct_evaluation() {
     // --map: 120 rows of a slip sweep at two spins and two k's; every row
@@ -106,20 +118,11 @@ fn map_option_agrees_with_direct_evaluation() {
             input += &format!("{k},{},-0.3,{}\n", -0.1 * f64::from(n), -j3);
         }
     }
-    let col = |out: &str| -> Vec<[f64; 3]> {
-        out.lines()
-            .skip(1)
-            .map(|l| {
-                let c: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
-                [c[4], c[5], c[6]]
-            })
-            .collect()
-    };
     let (ok, mapped, err) = run(&["jt", "--map", "--tol", "1e-3"], &input);
     assert!(ok, "{err}");
     let (ok, direct, err) = run(&["jt", "--tol", "1e-5"], &input);
     assert!(ok, "{err}");
-    let (m, d) = (col(&mapped), col(&direct));
+    let (m, d) = (j4_j5_j6(&mapped), j4_j5_j6(&direct));
     assert_eq!(m.len(), 120);
     for (a, b) in m.iter().zip(&d) {
         for i in 0..3 {
@@ -134,15 +137,6 @@ fn map_option_agrees_with_direct_evaluation() {
 
 #[test]
 fn map_option_is_used_only_where_it_pays_off() {
-    let col = |out: &str| -> Vec<[f64; 3]> {
-        out.lines()
-            .skip(1)
-            .map(|l| {
-                let c: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
-                [c[4], c[5], c[6]]
-            })
-            .collect()
-    };
     // A dense group: 600 rows of a slip sweep within 2 % of one state at
     // k = 1 need one or two cells (≤ 130 node evaluations, within the budget
     // of 0.5 per row): interpolated (some row differs from the direct value),
@@ -157,7 +151,7 @@ fn map_option_is_used_only_where_it_pays_off() {
     assert!(ok, "{err}");
     let (ok, fine, err) = run(&["jt", "--tol", "1e-5"], &dense);
     assert!(ok, "{err}");
-    let (m, d, f) = (col(&mapped), col(&direct), col(&fine));
+    let (m, d, f) = (j4_j5_j6(&mapped), j4_j5_j6(&direct), j4_j5_j6(&fine));
     assert!(
         m.iter().zip(&d).any(|(a, b)| a != b),
         "the map was not used"
