@@ -260,36 +260,23 @@ fn fmu_state_restores_and_serializes() {
 
 #[test]
 fn instances_on_threads_are_independent() {
-    let serial: Vec<Vec<f64>> = (0..3)
-        .map(|k| {
-            // The same call sequence as on the threads: each roller solve
-            // starts from the previous root, so results repeat bit for bit
-            // for the same sequence (docs/decisions/0062).
-            let c = instantiate();
-            initialize(c);
-            let mut v = Vec::new();
-            for _ in 0..5 {
-                v = operate(c, 0.0, 240.0 - 10.0 * k as f64);
-            }
-            // SAFETY: instance from fmi2Instantiate.
-            unsafe { fmi2FreeInstance(c) };
-            v
-        })
-        .collect();
+    // Each roller solve starts from the previous root, so results repeat bit
+    // for bit for the same call sequence (docs/decisions/0062): one instance
+    // stepped five times at the output speed of case `k`.
+    fn sequence(k: usize) -> Vec<f64> {
+        let c = instantiate();
+        initialize(c);
+        let mut v = Vec::new();
+        for _ in 0..5 {
+            v = operate(c, 0.0, 240.0 - 10.0 * k as f64);
+        }
+        // SAFETY: instance from fmi2Instantiate.
+        unsafe { fmi2FreeInstance(c) };
+        v
+    }
+    let serial: Vec<Vec<f64>> = (0..3).map(sequence).collect();
     let threads: Vec<_> = (0..3)
-        .map(|k| {
-            std::thread::spawn(move || {
-                let c = instantiate();
-                initialize(c);
-                let mut v = Vec::new();
-                for _ in 0..5 {
-                    v = operate(c, 0.0, 240.0 - 10.0 * k as f64);
-                }
-                // SAFETY: instance from fmi2Instantiate.
-                unsafe { fmi2FreeInstance(c) };
-                v
-            })
-        })
+        .map(|k| std::thread::spawn(move || sequence(k)))
         .collect();
     for (k, t) in threads.into_iter().enumerate() {
         assert_eq!(t.join().unwrap(), serial[k]);
