@@ -37,6 +37,54 @@ const RD_Q_FACTOR: f64 = 584.803_547_642_573;
 /// against non-finite input looping forever.
 const MAX_STEPS: usize = 64;
 
+/// Where Carlson's duplication algorithm stops: the mean `A_m`, `4^-m` and
+/// the normalised deviations `X = (A₀ − x)·4^-m/A_m`, `Y = (A₀ − y)·4^-m/A_m`
+/// of the final series.
+struct Duplicated {
+    xx: f64,
+    yy: f64,
+    am: f64,
+    pow4: f64,
+}
+
+/// The duplication steps shared by [`rf`] and [`rd`], from `(x, y, z)` with
+/// the starting mean `a0` (each integral's own) until `4^-m·Q < |A_m|`, where
+/// `Q = q_factor·max(|A₀ − x|, |A₀ − y|, |A₀ − z|)`. A step takes
+/// `λ = √x√y + √y√z + √z√x` and moves x, y, z and A to `(· + λ)/4`; before it
+/// moves, `term(4^-m, √z_m, z_m + λ)` sees the step (R_D sums its terms
+/// there).
+fn duplicate(
+    x: f64,
+    y: f64,
+    z: f64,
+    a0: f64,
+    q_factor: f64,
+    mut term: impl FnMut(f64, f64, f64),
+) -> Duplicated {
+    let q = q_factor * (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs());
+    let (mut xm, mut ym, mut zm, mut am) = (x, y, z, a0);
+    let mut pow4 = 1.0; // 4^-m
+    for _ in 0..MAX_STEPS {
+        if pow4 * q < am.abs() {
+            break;
+        }
+        let (sx, sy, sz) = (xm.sqrt(), ym.sqrt(), zm.sqrt());
+        let lambda = sx * sy + sy * sz + sz * sx;
+        term(pow4, sz, zm + lambda);
+        xm = (xm + lambda) * 0.25;
+        ym = (ym + lambda) * 0.25;
+        zm = (zm + lambda) * 0.25;
+        am = (am + lambda) * 0.25;
+        pow4 *= 0.25;
+    }
+    Duplicated {
+        xx: (a0 - x) * pow4 / am,
+        yy: (a0 - y) * pow4 / am,
+        am,
+        pow4,
+    }
+}
+
 /// Carlson's symmetric integral of the first kind,
 /// `R_F(x, y, z) = ½ ∫₀^∞ dt / √((t+x)(t+y)(t+z))`.
 ///
@@ -54,23 +102,7 @@ pub fn rf(x: f64, y: f64, z: f64) -> f64 {
         return f64::NAN;
     }
     let a0 = (x + y + z) / 3.0;
-    let q = RF_Q_FACTOR * (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs());
-    let (mut xm, mut ym, mut zm, mut am) = (x, y, z, a0);
-    let mut pow4 = 1.0; // 4^-m
-    for _ in 0..MAX_STEPS {
-        if pow4 * q < am.abs() {
-            break;
-        }
-        let (sx, sy, sz) = (xm.sqrt(), ym.sqrt(), zm.sqrt());
-        let lambda = sx * sy + sy * sz + sz * sx;
-        xm = (xm + lambda) * 0.25;
-        ym = (ym + lambda) * 0.25;
-        zm = (zm + lambda) * 0.25;
-        am = (am + lambda) * 0.25;
-        pow4 *= 0.25;
-    }
-    let xx = (a0 - x) * pow4 / am;
-    let yy = (a0 - y) * pow4 / am;
+    let Duplicated { xx, yy, am, .. } = duplicate(x, y, z, a0, RF_Q_FACTOR, |_, _, _| {});
     let zz = -(xx + yy);
     let e2 = xx * yy - zz * zz;
     let e3 = xx * yy * zz;
@@ -93,25 +125,11 @@ pub fn rd(x: f64, y: f64, z: f64) -> f64 {
         return f64::NAN;
     }
     let a0 = (x + y + 3.0 * z) / 5.0;
-    let q = RD_Q_FACTOR * (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs());
-    let (mut xm, mut ym, mut zm, mut am) = (x, y, z, a0);
-    let mut pow4 = 1.0; // 4^-m
     let mut sum = 0.0;
-    for _ in 0..MAX_STEPS {
-        if pow4 * q < am.abs() {
-            break;
-        }
-        let (sx, sy, sz) = (xm.sqrt(), ym.sqrt(), zm.sqrt());
-        let lambda = sx * sy + sy * sz + sz * sx;
-        sum += pow4 / (sz * (zm + lambda));
-        xm = (xm + lambda) * 0.25;
-        ym = (ym + lambda) * 0.25;
-        zm = (zm + lambda) * 0.25;
-        am = (am + lambda) * 0.25;
-        pow4 *= 0.25;
-    }
-    let xx = (a0 - x) * pow4 / am;
-    let yy = (a0 - y) * pow4 / am;
+    let Duplicated { xx, yy, am, pow4 } =
+        duplicate(x, y, z, a0, RD_Q_FACTOR, |pow4, sz, z_plus_lambda| {
+            sum += pow4 / (sz * z_plus_lambda);
+        });
     let zz = -(xx + yy) / 3.0;
     let xy = xx * yy;
     let z2 = zz * zz;
