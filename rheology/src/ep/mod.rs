@@ -46,6 +46,7 @@
 //!   of g's cubic Hermite interpolant over the step as the first trial
 //!   length, then Newton with the exact dg/ds, safeguarded by regula falsi).
 
+mod kink;
 mod plastic;
 mod quadrature;
 mod yield_point;

@@ -1043,7 +1043,7 @@ impl Strip {
     /// g = (a·nx + vy·ny)·cos s + (3/2)·sin s, dn/ds = θ'·(−ny, nx) and
     /// dvy/ds = q2·c·cos s.
     #[inline]
-    fn g_rate(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
+    pub(super) fn g_rate(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
         let vy = self.vy(self.c * sn);
         let th = self.theta_rate(sn, cs, nx, ny);
         let dvn = th * (vy * nx - self.a * ny) + self.q2 * self.c * cs * ny;

@@ -309,7 +309,8 @@ pub(crate) fn graded_breaks(
 }
 
 /// Elastic/plastic (J4, J5, J6) by Lobatto–Kronrod panels in Y
-/// ([`lobatto_kronrod_in_phi`]) from the panels of [`initial_breaks`];
+/// ([`lobatto_kronrod_in_phi`]) from the panels of [`initial_breaks`], below
+/// tol 4e-4 those next to the pole's strip split at located kinks;
 /// s-step `s_step`, or `s_step_smooth` (≥ `s_step`) on plastic segments
 /// that are non-stiff at it, exponential steps of up to
 /// [`ETD_STEP`]·√(tol/1e-3) on stiff segments where the slip direction
@@ -340,18 +341,74 @@ pub(crate) fn solve_adaptive(
     } else {
         0.0
     };
-    let strip = |y: f64| {
-        let (st, topology) = sc.strip(y).integrate_etd(s_step, s_step_smooth, etd_step);
-        ([st.ix, st.iy, st.ixy], topology)
+    let strip = |y: f64, margin: bool| {
+        let s = sc.strip(y);
+        let (st, topology, m) = if margin {
+            s.integrate_etd_margin(s_step, s_step_smooth, etd_step)
+        } else {
+            let (st, topology) = s.integrate_etd(s_step, s_step_smooth, etd_step);
+            (st, topology, f64::NAN)
+        };
+        ([st.ix, st.iy, st.ixy], topology, m)
     };
     let k_dx = (sc.k, sc.dx);
+    // The pole's strip in φ (an initial edge; 0 for J1 = J3 = 0).
+    let pp = (sc.a0 / sc.j3).clamp(-1.0, 1.0).asin();
+    let pp = if pp.is_nan() { 0.0 } else { pp };
     if sc.a0 == 0.0
         && let Some(i0) = breaks[..nb].iter().position(|&b| b == 0.0)
     {
-        let (_, j5, j6) = lobatto_kronrod_in_phi(&breaks[i0..nb], tol, MAX_DEPTH, k_dx, strip);
+        let breaks = &breaks[i0..nb];
+        let (_, j5, j6) = lobatto_kronrod_in_phi(breaks, tol, MAX_DEPTH, k_dx, pp, strip);
         return (0.0, 2.0 * j5, 2.0 * j6);
     }
-    lobatto_kronrod_in_phi(&breaks[..nb], tol, MAX_DEPTH, k_dx, strip)
+    lobatto_kronrod_in_phi(&breaks[..nb], tol, MAX_DEPTH, k_dx, pp, strip)
+}
+
+/// Regula falsi points on the kink margin (`Strip::integrate_etd_margin`)
+/// per initial panel whose end strips' margins differ in sign; the last one
+/// becomes the panel's split (so 2 strips per kink are spent on locating
+/// it). On 2000 rows of a random batch at tol 1e-4 (k 0.2–5, |J1|, |J2| ≤ 5,
+/// |J3| ≤ 26) 2, 3 and 4 points took 117.3 k, 113.8 k and 115.5 k strips
+/// (no splits: 138.3 k); with 3 the split lies a median 0.0006 (90th
+/// percentile 0.0037) in φ from the kink. Illinois' halving of the
+/// retained end's margin took more (3 points: 117.2 k)
+/// (docs/decisions/0094).
+const KINK_POINTS: usize = 3;
+
+/// Initial edges on each side of the pole's strip whose strips get a kink
+/// margin (and the pole's own): the kinks of the strip sums next to it lie
+/// within its first two panels on either side (on 2000 rows of the random
+/// batch at tol 1e-4 all 2818 kinks, found by a dense scan, lie within
+/// 9/|J3| of it in φ, the second edge); beyond, no margins are computed and
+/// no panel is split (docs/decisions/0094).
+const KINK_EDGES: usize = 2;
+
+/// Tolerances (lo, hi) between which the initial panels' split at a located
+/// kink moves in (`kink_share`): split at the kink for tol ≤ lo, none for
+/// tol ≥ hi. Splitting at every tol, the instructions on the 307 cases of
+/// `cargo xtask ep-sets` change by +11.6 % at tol 1e-3, +8.7 % at 7e-4,
+/// +3.9 % at 5e-4, +0.1 % at 4e-4, −3.7 % at 3e-4, −7.3 % at 2e-4 and
+/// −15.2 % at 1e-4 (a kink panel at the larger tolerances is settled by one
+/// refinement, cheaper than the locating strips and the extra panel); in
+/// between the two, at 3.5e-4, a split half-way to the kink costs +13 %
+/// (docs/decisions/0094).
+const KINK_SPLIT_TOL: (f64, f64) = (3e-4, 4e-4);
+
+/// Where between a split initial panel's end nearer the pole's strip (0)
+/// and the located kink (1) that panel is split: 1 at tol ≤
+/// KINK_SPLIT_TOL.0, 0 (no split, and no kink margins computed) at tol ≥
+/// KINK_SPLIT_TOL.1, linear in log10(tol) in between, so that the result
+/// is continuous in tol too (and mirror-symmetric for J1 = 0).
+fn kink_share(tol: f64) -> f64 {
+    let (lo, hi) = KINK_SPLIT_TOL;
+    if tol >= hi {
+        0.0
+    } else if tol <= lo {
+        1.0
+    } else {
+        (hi / tol).log10() / (hi / lo).log10()
+    }
 }
 
 /// Deepest refinement of an initial panel in [`solve_adaptive`].
@@ -440,9 +497,21 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 }
 
 /// Adaptive Lobatto–Kronrod panels in φ (Y = sin φ) from the sorted edges
-/// `breaks` (from −π/2 to π/2); `strip(Y)` gives a strip's
-/// (∫Zx, ∫Zy, ∫Zy·X) and its flow topology (any number that changes where
-/// the strip sums have a kink in Y). Each panel is decided in two stages,
+/// `breaks` (from −π/2 to π/2, one of them `pole`, the spin pole's strip);
+/// `strip(Y, margin)` gives a strip's (∫Zx, ∫Zy, ∫Zy·X), its flow topology
+/// (any number that changes where the strip sums have a kink in Y) and,
+/// with `margin`, its kink margin (`Strip::integrate_etd_margin`; NaN
+/// without).
+///
+/// Below tol 4e-4 ([`KINK_SPLIT_TOL`]) an initial panel next to the pole's
+/// strip (within [`KINK_EDGES`] edges) whose end strips' margins differ in
+/// sign holds a kink where an unloading appears or vanishes: it is located
+/// by regula falsi on the margins ([`KINK_POINTS`] strips) and the panel
+/// split there (fully at tol ≤ 3e-4, see `kink_share`) into two initial
+/// panels, which then need not be refined down to the kink
+/// (docs/decisions/0094).
+///
+/// Each panel is decided in two stages,
 /// each against the allowed change tol·width/π in J4, J5 and J6
 /// (ACCEPT_KINK times that where the panel's strips differ in topology;
 /// ACCEPT_KINK_REFINED on refined panels at tol ≤ 1e-4):
@@ -484,19 +553,26 @@ pub(crate) fn lobatto_kronrod_in_phi(
     tol: f64,
     max_depth: u32,
     (k, dx): (f64, f64),
-    mut strip: impl FnMut(f64) -> ([f64; 3], u32),
+    pole: f64,
+    mut strip: impl FnMut(f64, bool) -> ([f64; 3], u32, f64),
 ) -> (f64, f64, f64) {
     let kink_refined = ACCEPT_KINK + fine_tol(tol) * (ACCEPT_KINK_REFINED - ACCEPT_KINK);
-    // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx), and the topology.
-    let mut f = |phi: f64| -> Node {
+    let split = kink_share(tol);
+    // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx), the topology,
+    // and with `margin` the strip's kink margin (NaN without; and for the
+    // empty strips at Y = ±1).
+    let mut fm = |phi: f64, margin: bool| -> (Node, f64) {
         let (y, cphi) = phi.sin_cos();
         if cphi <= 0.0 || phi.abs() >= FRAC_PI_2 {
-            return ([0.0; 4], 0);
+            return (([0.0; 4], 0), f64::NAN);
         }
-        let (st, t) = strip(y);
+        let (st, t, m) = strip(y, margin);
         (
-            [cphi * st[0], cphi * st[1], cphi * st[2], cphi * y * st[0]],
-            t,
+            (
+                [cphi * st[0], cphi * st[1], cphi * st[2], cphi * y * st[0]],
+                t,
+            ),
+            m,
         )
     };
     let mut total = [0.0; 4];
@@ -504,14 +580,54 @@ pub(crate) fn lobatto_kronrod_in_phi(
     // Interior Lobatto nodes of the halves on `stack` that have them (in
     // the same order: a half's are on top when it is taken).
     let mut known: Vec<[Node; 3]> = Vec::with_capacity(16);
-    let mut flo = f(breaks[0]);
-    for w in breaks.windows(2) {
-        let fhi = f(w[1]);
+    // The initial panels, each split where a kink (an unloading appearing
+    // or vanishing) is located by regula falsi on the kink margins of its
+    // ends (KINK_POINTS strips, the last the split; at `split` < 1 the
+    // split lies that share of the way from the panel's end nearer the
+    // pole's strip to it). Margins only at the pole's strip and the
+    // KINK_EDGES edges on each side of it. A split appears or vanishes
+    // where a margin changes sign, at a panel's end, where the split then
+    // lies: the result stays continuous.
+    let ip = breaks.iter().position(|&b| b == pole);
+    let margin_at = |i: usize| split > 0.0 && ip.is_some_and(|ip| i.abs_diff(ip) <= KINK_EDGES);
+    let mut flo = fm(breaks[0], margin_at(0));
+    for (i, w) in breaks.windows(2).enumerate() {
+        let fhi = fm(w[1], margin_at(i + 1));
         if w[1] > w[0] {
-            stack.push((w[0], w[1], flo, fhi, 0, 1.0, None));
+            if flo.1 * fhi.1 < 0.0 {
+                let (mut a, mut ma, mut b, mut mb) = (w[0], flo.1, w[1], fhi.1);
+                let mut x = a;
+                for j in 1..KINK_POINTS {
+                    x = a + (b - a) * ma / (ma - mb);
+                    let mx = fm(x, true).1;
+                    if mx.is_nan() {
+                        break;
+                    }
+                    if (mx > 0.0) == (ma > 0.0) {
+                        (a, ma) = (x, mx);
+                    } else {
+                        (b, mb) = (x, mx);
+                    }
+                    if j + 1 == KINK_POINTS {
+                        x = a + (b - a) * ma / (ma - mb);
+                    }
+                }
+                let end = if w[1] <= pole { w[1] } else { w[0] };
+                let x = if split < 1.0 {
+                    end + split * (x - end)
+                } else {
+                    x
+                };
+                let fx = fm(x, false).0;
+                stack.push((w[0], x, flo.0, fx, 0, 1.0, None));
+                stack.push((x, w[1], fx, fhi.0, 0, 1.0, None));
+            } else {
+                stack.push((w[0], w[1], flo.0, fhi.0, 0, 1.0, None));
+            }
         }
         flo = fhi;
     }
+    let mut f = |phi: f64| fm(phi, false).0;
     while let Some((lo, hi, fl, fh, depth, weight, pair)) = stack.pop() {
         let (m, hw) = (0.5 * (lo + hi), 0.5 * (hi - lo));
         // The strips at Y = ±1 (zero width) count as any topology.
