@@ -310,7 +310,7 @@ pub(crate) fn graded_breaks(
 
 /// Elastic/plastic (J4, J5, J6) by Lobatto–Kronrod panels in Y
 /// ([`lobatto_kronrod_in_phi`]) from the panels of [`initial_breaks`], below
-/// tol 4e-4 those next to the pole's strip split at located kinks;
+/// tol 4e-4 split at located kinks;
 /// s-step `s_step`, or `s_step_smooth` (≥ `s_step`) on plastic segments
 /// that are non-stiff at it, exponential steps of up to
 /// [`ETD_STEP`]·√(tol/1e-3) on stiff segments where the slip direction
@@ -376,13 +376,16 @@ pub(crate) fn solve_adaptive(
 /// (docs/decisions/0094).
 const KINK_POINTS: usize = 3;
 
-/// Initial edges on each side of the pole's strip whose strips get a kink
-/// margin (and the pole's own): the kinks of the strip sums next to it lie
-/// within its first two panels on either side (on 2000 rows of the random
-/// batch at tol 1e-4 all 2818 kinks, found by a dense scan, lie within
-/// 9/|J3| of it in φ, the second edge); beyond, no margins are computed and
-/// no panel is split (docs/decisions/0094).
-const KINK_EDGES: usize = 2;
+/// Band at a panel's ends, in units of its width, within which a located
+/// kink's split is pulled to the nearer end (by a C¹ smooth step in the
+/// distance): where an unloading band is born at an edge (the pole's
+/// strip), its kinks leave it like the square root of the inputs' change,
+/// and a split that followed them at once moved the results by up to
+/// 0.035·tol within 1e-4 of J3 (k = 1, J = (0.2, 0.1, 3.2); 0.009·tol
+/// with 0.1, 0.007·tol with 0.2, 0.021·tol with 0.05). 0.1 costs +0.3 %
+/// instructions on a random batch at tol 1e-4, 0.2 +4.5 %
+/// (docs/decisions/0094).
+const KINK_END_BAND: f64 = 0.1;
 
 /// Tolerances (lo, hi) between which the initial panels' split at a located
 /// kink moves in (`kink_share`): split at the kink for tol ≤ lo, none for
@@ -503,9 +506,8 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 /// with `margin`, its kink margin (`Strip::integrate_etd_margin`; NaN
 /// without).
 ///
-/// Below tol 4e-4 ([`KINK_SPLIT_TOL`]) an initial panel next to the pole's
-/// strip (within [`KINK_EDGES`] edges) whose end strips' margins differ in
-/// sign holds a kink where an unloading appears or vanishes: it is located
+/// Below tol 4e-4 ([`KINK_SPLIT_TOL`]) an initial panel whose end strips'
+/// margins differ in sign holds a kink where an unloading appears or vanishes: it is located
 /// by regula falsi on the margins ([`KINK_POINTS`] strips) and the panel
 /// split there (fully at tol ≤ 3e-4, see `kink_share`) into two initial
 /// panels, which then need not be refined down to the kink
@@ -564,7 +566,10 @@ pub(crate) fn lobatto_kronrod_in_phi(
     let mut fm = |phi: f64, margin: bool| -> (Node, f64) {
         let (y, cphi) = phi.sin_cos();
         if cphi <= 0.0 || phi.abs() >= FRAC_PI_2 {
-            return (([0.0; 4], 0), f64::NAN);
+            // The empty strip's margin (that of a strip with no plastic
+            // segment, see `Strip::integrate_etd_margin`).
+            let m = if margin { strip(y, true).2 } else { f64::NAN };
+            return (([0.0; 4], 0), m);
         }
         let (st, t, m) = strip(y, margin);
         (
@@ -584,15 +589,14 @@ pub(crate) fn lobatto_kronrod_in_phi(
     // or vanishing) is located by regula falsi on the kink margins of its
     // ends (KINK_POINTS strips, the last the split; at `split` < 1 the
     // split lies that share of the way from the panel's end nearer the
-    // pole's strip to it). Margins only at the pole's strip and the
-    // KINK_EDGES edges on each side of it. A split appears or vanishes
-    // where a margin changes sign, at a panel's end, where the split then
-    // lies: the result stays continuous.
-    let ip = breaks.iter().position(|&b| b == pole);
-    let margin_at = |i: usize| split > 0.0 && ip.is_some_and(|ip| i.abs_diff(ip) <= KINK_EDGES);
-    let mut flo = fm(breaks[0], margin_at(0));
-    for (i, w) in breaks.windows(2).enumerate() {
-        let fhi = fm(w[1], margin_at(i + 1));
+    // pole's strip to it; within KINK_END_BAND of a panel's end it is
+    // pulled to that end). A split appears or vanishes where a margin
+    // changes sign, at a panel's end, where the split then lies: the result
+    // stays continuous.
+    let margins = split > 0.0;
+    let mut flo = fm(breaks[0], margins);
+    for w in breaks.windows(2) {
+        let fhi = fm(w[1], margins);
         if w[1] > w[0] {
             if flo.1 * fhi.1 < 0.0 {
                 let (mut a, mut ma, mut b, mut mb) = (w[0], flo.1, w[1], fhi.1);
@@ -612,6 +616,11 @@ pub(crate) fn lobatto_kronrod_in_phi(
                         x = a + (b - a) * ma / (ma - mb);
                     }
                 }
+                // Pulled to the nearer end within KINK_END_BAND of the
+                // panel's width from it.
+                let near = if x - w[0] <= w[1] - x { w[0] } else { w[1] };
+                let band = KINK_END_BAND * (w[1] - w[0]);
+                let x = near + smooth_step((x - near).abs() / band) * (x - near);
                 let end = if w[1] <= pole { w[1] } else { w[0] };
                 let x = if split < 1.0 {
                     end + split * (x - end)
