@@ -627,9 +627,15 @@ pub(crate) fn lobatto_kronrod_in_phi(
                 } else {
                     x
                 };
+                // A split at a panel's end (a margin of exactly 0 there)
+                // leaves that panel whole: no empty panel is decided.
                 let fx = fm(x, false).0;
-                stack.push((w[0], x, flo.0, fx, 0, 1.0, None));
-                stack.push((x, w[1], fx, fhi.0, 0, 1.0, None));
+                if x > w[0] {
+                    stack.push((w[0], x, flo.0, fx, 0, 1.0, None));
+                }
+                if w[1] > x {
+                    stack.push((x, w[1], fx, fhi.0, 0, 1.0, None));
+                }
             } else {
                 stack.push((w[0], w[1], flo.0, fhi.0, 0, 1.0, None));
             }
