@@ -31,7 +31,7 @@ use super::{Event, Strip, StripSums};
 /// Largest margin: g at the outlet (s = π/2), where every plastic segment
 /// ends; also the margin of a strip that stays elastic and nowhere nears
 /// the limit.
-const MARGIN_CAP: f64 = 1.5;
+pub(super) const MARGIN_CAP: f64 = 1.5;
 
 /// Equal intervals per elastic segment on which the sign of d(L² − |Z|²)/dX
 /// (a cubic in X) is sampled for its interior minima.

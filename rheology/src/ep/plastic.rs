@@ -1441,6 +1441,28 @@ mod tests {
         first.expect("the strip yields")
     }
 
+    /// A strip integrated at `steps` (`integrate_with`): its sums, the
+    /// plastic states of its first plastic segment and the elastic segments
+    /// after them, the span in s from its first yield point to the outlet
+    /// and the relaxation rate κ at that point.
+    fn first_segment(
+        st: &super::Strip,
+        steps: (f64, f64, f64, bool),
+    ) -> (super::StripSums, usize, usize, f64, f64) {
+        let (mut states, mut segments) = (0, 0);
+        let (e, _) = st.integrate_with(steps, &mut |ev| match ev {
+            super::Event::Plastic { .. } if segments == 0 => states += 1,
+            super::Event::Elastic { .. } if states > 0 => segments += 1,
+            _ => {}
+        });
+        let (sn, _) = first_yield(st);
+        let span = std::f64::consts::FRAC_PI_2 - sn.asin();
+        let kr = st
+            .rates::<true>(sn, (1.0 - sn * sn).sqrt(), 1.0, 0.0, 1.0)
+            .0;
+        (e, states, segments, span, kr)
+    }
+
     #[test]
     fn fifth_order_rule_converges_at_fifth_order() {
         // Case a of the bench set (k = 0.5, J = (2, −1, 10)): from the first
@@ -1481,21 +1503,9 @@ mod tests {
         let sc = Scaled::new(0.5, 2.0, -1.0, 10.0, 0.0);
         for y in [-0.9, -0.7, -0.55] {
             let st = sc.strip(y);
-            // Plastic states of the first plastic segment.
-            let (mut states, mut segments) = (0, 0);
-            let (e, _) = st.integrate_with((0.1, 0.2, 0.4, true), &mut |ev| match ev {
-                super::Event::Plastic { .. } if segments == 0 => states += 1,
-                super::Event::Elastic { .. } if states > 0 => segments += 1,
-                _ => {}
-            });
-            let (sn, _) = first_yield(&st);
-            let span = std::f64::consts::FRAC_PI_2 - sn.asin();
+            let (e, states, segments, span, kr) = first_segment(&st, (0.1, 0.2, 0.4, true));
             let nsteps = (span / 0.2).ceil();
-            let kh = st
-                .rates::<true>(sn, (1.0 - sn * sn).sqrt(), 1.0, 0.0, 1.0)
-                .0
-                * span
-                / nsteps;
+            let kh = kr * span / nsteps;
             assert!(
                 kh > KAPPA_H && kh <= super::RK5_KAPPA_H_STIFF,
                 "Y = {y}: κ·h = {kh}"
@@ -1522,18 +1532,8 @@ mod tests {
         let sc = Scaled::new(5.0, 0.0, 3.368, 25.816, 0.0);
         for y in [-0.9, -0.7, 0.8] {
             let st = sc.strip(y);
-            let (mut states, mut segments) = (0, 0);
             let steps = (s_step, 2.0 * s_step, 0.8, true);
-            let (e, _) = st.integrate_with(steps, &mut |ev| match ev {
-                super::Event::Plastic { .. } if segments == 0 => states += 1,
-                super::Event::Elastic { .. } if states > 0 => segments += 1,
-                _ => {}
-            });
-            let (sn, _) = first_yield(&st);
-            let span = std::f64::consts::FRAC_PI_2 - sn.asin();
-            let kr = st
-                .rates::<true>(sn, (1.0 - sn * sn).sqrt(), 1.0, 0.0, 1.0)
-                .0;
+            let (e, states, segments, span, kr) = first_segment(&st, steps);
             let (n1, n2) = ((span / s_step).ceil(), (span / (2.0 * s_step)).ceil());
             let (kh1, kh2) = (kr * span / n1, kr * span / n2);
             assert!(

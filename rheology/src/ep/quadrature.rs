@@ -3,6 +3,7 @@
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
+use super::kink::MARGIN_CAP;
 use super::{ETD_MIN_STEP, Resolution, Scaled, Strip, StripSums, smooth_step};
 use crate::quad;
 
@@ -566,9 +567,9 @@ pub(crate) fn lobatto_kronrod_in_phi(
     let mut fm = |phi: f64, margin: bool| -> (Node, f64) {
         let (y, cphi) = phi.sin_cos();
         if cphi <= 0.0 || phi.abs() >= FRAC_PI_2 {
-            // The empty strip's margin (that of a strip with no plastic
-            // segment, see `Strip::integrate_etd_margin`).
-            let m = if margin { strip(y, true).2 } else { f64::NAN };
+            // The empty strip (Y = ±1) has the margin of a strip with no
+            // plastic segment (`Strip::integrate_etd_margin`).
+            let m = if margin { MARGIN_CAP } else { f64::NAN };
             return (([0.0; 4], 0), m);
         }
         let (st, t, m) = strip(y, margin);

@@ -344,19 +344,19 @@ mod tests {
         // ends-elastic threshold 1e-15·c (the strip's flow topology then
         // flips). Beyond |q2|·c = 3 it yields inside, at c² − X² = 9/q2²
         // (within the 1e-6·c of the test above).
+        let pole_strip = |c: f64, q2: f64| Strip {
+            c,
+            a: 0.0,
+            b1: 0.0,
+            q2,
+            gy: 1.0,
+        };
         let mut n = 0;
         for i in 0..1000 {
             let c = 0.05 + 0.95 * f64::from(i) / 999.0;
             for r in [0.3, 1.7, 2.9, -2.2] {
                 let q2 = r / c;
-                let s = Strip {
-                    c,
-                    a: 0.0,
-                    b1: 0.0,
-                    q2,
-                    gy: 1.0,
-                };
-                let x = s.find_yield(-c, (0.0, 0.0), 0.1);
+                let x = pole_strip(c, q2).find_yield(-c, (0.0, 0.0), 0.1);
                 assert!(x == c, "c {c} q2 {q2}: {x:e}");
                 n += 1;
             }
@@ -364,14 +364,7 @@ mod tests {
         assert_eq!(n, 4000);
         for r in [3.5, -6.0, 40.0] {
             let (c, q2) = (0.8, r / 0.8);
-            let s = Strip {
-                c,
-                a: 0.0,
-                b1: 0.0,
-                q2,
-                gy: 1.0,
-            };
-            let x = s.find_yield(-c, (0.0, 0.0), 0.1);
+            let x = pole_strip(c, q2).find_yield(-c, (0.0, 0.0), 0.1);
             let exact = -(c * c - 9.0 / (q2 * q2)).sqrt();
             assert!((x - exact).abs() <= 1e-6 * c, "q2 {q2}: {x} vs {exact}");
         }
