@@ -1,0 +1,482 @@
+//! The one-step rules of a plastic segment, each advancing a state
+//! (`PState`: s, the direction n and the strip sums) by one step h:
+//! [`Strip::rk4`], the default step; [`Strip::rk5`], Butcher's fifth-order
+//! rule, for equal steps on moderately stiff segments; [`Strip::etd`], the
+//! exponential step on stiff isotropic segments whose slip direction turns
+//! slowly (with [`phi_functions`]); [`Strip::quasi_steady`], the stiff limit
+//! along the direction [`Strip::qs_dir`], and [`blend`], which blends it in.
+//! Also the bounds by which the segment driver (`mod.rs`) chooses among
+//! them, [`Strip::rates`] ((κ·h, |α'|·h) over a step), and
+//! [`sin_cos_small`] for the step's half angle. None of them tests for
+//! unloading: the driver's `Strip::step_end` does, after every step.
+
+use super::super::{CS_MIN, PState, Strip, StripSums};
+
+/// (sin x, cos x) of a (half) step angle: Taylor polynomials for |x| ≤ 1/2,
+/// whose truncation error (< x¹⁷/17! ≈ 2e-20 for sin, x¹⁸/18! for cos) is
+/// far below the rounding of f64, so the result agrees with the library's
+/// sin/cos to within an ulp or two at a third of the cost; larger angles
+/// use the library.
+#[inline]
+pub(super) fn sin_cos_small(x: f64) -> (f64, f64) {
+    if x.abs() > 0.5 {
+        return x.sin_cos();
+    }
+    let x2 = x * x;
+    // Horner in x²: sin x = x·Σ (−x²)^i/(2i+1)!, cos x = Σ (−x²)^i/(2i)!.
+    let s = x
+        * (1.0
+            - x2 / 6.0
+                * (1.0
+                    - x2 / 20.0
+                        * (1.0
+                            - x2 / 42.0
+                                * (1.0
+                                    - x2 / 72.0
+                                        * (1.0
+                                            - x2 / 110.0
+                                                * (1.0 - x2 / 156.0 * (1.0 - x2 / 210.0)))))));
+    let c = 1.0
+        - x2 / 2.0
+            * (1.0
+                - x2 / 12.0
+                    * (1.0
+                        - x2 / 30.0
+                            * (1.0
+                                - x2 / 56.0
+                                    * (1.0
+                                        - x2 / 90.0
+                                            * (1.0
+                                                - x2 / 132.0
+                                                    * (1.0 - x2 / 182.0 * (1.0 - x2 / 240.0)))))));
+    (s, c)
+}
+
+/// Newton on the anisotropic quasi-steady direction (`qs_dir`): iterations,
+/// central-difference step in θ, convergence in θ (rad) and the largest
+/// correction from the isotropic guess that is still trusted (rad).
+const QS_NEWTON_ITERATIONS: usize = 4;
+const QS_DIFF_STEP: f64 = 1e-6;
+const QS_NEWTON_TOL: f64 = 1e-12;
+const QS_MAX_CORRECTION: f64 = 0.5;
+
+impl Strip {
+    /// One RK4 step of length h; (c2, s2) = (cos h/2, sin h/2).
+    ///
+    /// The integrands of the strip sums are Zx·dX/ds = w·nx, Zy·dX/ds = w·ny
+    /// and Zy·X·dX/ds = w·X·ny with w = L·dX/ds = (3/2)c²cos²s; the two
+    /// midpoint stages share their node quantities.
+    #[inline(always)]
+    pub(super) fn rk4<const ISO: bool>(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+        let c = self.c;
+        let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
+        let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
+        let (x0, xm, x1) = (c * p.sn, c * sm, c * s1);
+        let w = 1.5 * c * c;
+        let (w0, wm, w1) = (w * p.cs * p.cs, w * cm * cm, w * c1 * c1);
+        let k = 2.0 / 3.0;
+        let av = k * self.a;
+        let (vy0, vym, vy1) = (k * self.vy(x0), k * self.vy(xm), k * self.vy(x1));
+        // Anisotropic stiffness: the λ·t·G·n part of `theta_rate` (k·(3/2)·
+        // tan s at the three nodes, capped like there).
+        // Anisotropic stiffness: tan s at the three nodes (capped, see
+        // `theta_rate`).
+        let tan = |sn: f64, cs: f64| sn / cs.max(CS_MIN);
+        let (t0, tm, t1) = if !self.iso::<ISO>() {
+            (tan(p.sn, p.cs), tan(sm, cm), tan(s1, c1))
+        } else {
+            (0.0, 0.0, 0.0)
+        };
+        let om = |vy: f64, t: f64, nx: f64, ny: f64| self.flow_rate::<ISO>(vy, av, t, nx, ny);
+        let hh = 0.5 * h;
+        // Stage 1 at s0.
+        let (n1x, n1y) = (p.nx, p.ny);
+        let om1 = om(vy0, t0, n1x, n1y);
+        // Stage 2 at the midpoint.
+        let (n2x, n2y) = (n1x - hh * om1 * n1y, n1y + hh * om1 * n1x);
+        let om2 = om(vym, tm, n2x, n2y);
+        // Stage 3 at the midpoint.
+        let (n3x, n3y) = (n1x - hh * om2 * n2y, n1y + hh * om2 * n2x);
+        let om3 = om(vym, tm, n3x, n3y);
+        // Stage 4 at s1.
+        let (n4x, n4y) = (n1x - h * om3 * n3y, n1y + h * om3 * n3x);
+        let om4 = om(vy1, t1, n4x, n4y);
+        let h6 = h / 6.0;
+        let nx = n1x - h6 * (om1 * n1y + 2.0 * om2 * n2y + 2.0 * om3 * n3y + om4 * n4y);
+        let ny = n1y + h6 * (om1 * n1x + 2.0 * om2 * n2x + 2.0 * om3 * n3x + om4 * n4x);
+        let r = (nx * nx + ny * ny).sqrt();
+        let (mx, my) = (2.0 * wm * (n2x + n3x), 2.0 * wm * (n2y + n3y));
+        let mut acc = p.acc;
+        acc.ix += h6 * (w0 * n1x + mx + w1 * n4x);
+        acc.iy += h6 * (w0 * n1y + my + w1 * n4y);
+        acc.ixy += h6 * (x0 * w0 * n1y + xm * my + x1 * w1 * n4y);
+        PState {
+            sn: s1,
+            cs: c1,
+            nx: nx / r,
+            ny: ny / r,
+            acc,
+        }
+    }
+
+    /// One step of length h of Butcher's six-stage fifth-order rule,
+    /// (c4, s4) = (cos h/4, sin h/4): a21 = 1/4; a31 = a32 = 1/8;
+    /// (a41, a42, a43) = (0, −1/2, 1); (a51..a54) = (3, 0, 0, 9)/16;
+    /// (a61..a65) = (−3, 2, 12, −12, 8)/7; nodes 0, 1/4, 1/4, 1/2, 3/4, 1
+    /// and weights (7, 0, 32, 12, 32, 7)/90 (Boole's rule);
+    /// its 17 conditions of order 5 (Hairer, Nørsett & Wanner, Solving
+    /// Ordinary Differential Equations I, ch. II) are checked by a test, its
+    /// fifth order on a plastic segment by another. The strip sums are
+    /// integrated with the same stages, as in [`Strip::rk4`]; the stability
+    /// function 1 + z + … + z⁵/120 + z⁶/640 bounds the real stability
+    /// interval at κ·h = 3.39 (RK4: 2.79).
+    #[inline(always)]
+    pub(super) fn rk5<const ISO: bool>(&self, p: &PState, h: f64, c4: f64, s4: f64) -> PState {
+        // Written stage by stage, each stage's contributions to the later
+        // stages, the new direction and the strip sums accumulated as soon
+        // as it is known (fewer live values).
+        let c = self.c;
+        let k = 2.0 / 3.0;
+        let av = k * self.a;
+        let w = 1.5 * c * c;
+        let tan = |sn: f64, cs: f64| {
+            if self.iso::<ISO>() {
+                0.0
+            } else {
+                sn / cs.max(CS_MIN)
+            }
+        };
+        // dn/ds = ω·(−ny, nx) at the node (sn, cs).
+        let kv = |sn: f64, cs: f64, nx: f64, ny: f64| {
+            let om = self.flow_rate::<ISO>(k * self.vy(c * sn), av, tan(sn, cs), nx, ny);
+            (-om * ny, om * nx)
+        };
+        // Strip-sum integrands w·n times the weight wt/90 at the node.
+        let mut acc = p.acc;
+        let h90 = h / 90.0;
+        let mut add = |sn: f64, cs: f64, wt: f64, nx: f64, ny: f64| {
+            let f = h90 * wt * w * cs * cs;
+            let fy = f * ny;
+            acc.ix += f * nx;
+            acc.iy += fy;
+            acc.ixy += c * sn * fy;
+        };
+        let rot = |sn: f64, cs: f64| (sn * c4 + cs * s4, cs * c4 - sn * s4);
+        let (n1x, n1y) = (p.nx, p.ny);
+        // Stage 1 at s0.
+        add(p.sn, p.cs, 7.0, n1x, n1y);
+        let k1 = kv(p.sn, p.cs, n1x, n1y);
+        let mut un = (7.0 * k1.0, 7.0 * k1.1);
+        let mut u5 = (3.0 * k1.0, 3.0 * k1.1);
+        let mut u6 = (-3.0 * k1.0, -3.0 * k1.1);
+        // Stages 2 and 3 at s0 + h/4.
+        let (sa, ca) = rot(p.sn, p.cs);
+        let q = 0.25 * h;
+        let k2 = kv(sa, ca, n1x + q * k1.0, n1y + q * k1.1);
+        let e = 0.125 * h;
+        let (n3x, n3y) = (n1x + e * (k1.0 + k2.0), n1y + e * (k1.1 + k2.1));
+        u6 = (u6.0 + 2.0 * k2.0, u6.1 + 2.0 * k2.1);
+        add(sa, ca, 32.0, n3x, n3y);
+        let k3 = kv(sa, ca, n3x, n3y);
+        un = (un.0 + 32.0 * k3.0, un.1 + 32.0 * k3.1);
+        u6 = (u6.0 + 12.0 * k3.0, u6.1 + 12.0 * k3.1);
+        // Stage 4 at s0 + h/2.
+        let (sm, cm) = rot(sa, ca);
+        let (n4x, n4y) = (n1x + h * (k3.0 - 0.5 * k2.0), n1y + h * (k3.1 - 0.5 * k2.1));
+        add(sm, cm, 12.0, n4x, n4y);
+        let k4 = kv(sm, cm, n4x, n4y);
+        un = (un.0 + 12.0 * k4.0, un.1 + 12.0 * k4.1);
+        u5 = (u5.0 + 9.0 * k4.0, u5.1 + 9.0 * k4.1);
+        u6 = (u6.0 - 12.0 * k4.0, u6.1 - 12.0 * k4.1);
+        // Stage 5 at s0 + 3h/4.
+        let (sb, cb) = rot(sm, cm);
+        let g = h / 16.0;
+        let (n5x, n5y) = (n1x + g * u5.0, n1y + g * u5.1);
+        add(sb, cb, 32.0, n5x, n5y);
+        let k5 = kv(sb, cb, n5x, n5y);
+        un = (un.0 + 32.0 * k5.0, un.1 + 32.0 * k5.1);
+        // Stage 6 at s0 + h.
+        let (s1, c1) = rot(sb, cb);
+        let c1 = c1.max(0.0);
+        let f = h / 7.0;
+        let (n6x, n6y) = (n1x + f * (u6.0 + 8.0 * k5.0), n1y + f * (u6.1 + 8.0 * k5.1));
+        add(s1, c1, 7.0, n6x, n6y);
+        let k6 = kv(s1, c1, n6x, n6y);
+        let nx = n1x + h90 * (un.0 + 7.0 * k6.0);
+        let ny = n1y + h90 * (un.1 + 7.0 * k6.1);
+        let r = (nx * nx + ny * ny).sqrt();
+        PState {
+            sn: s1,
+            cs: c1,
+            nx: nx / r,
+            ny: ny / r,
+            acc,
+        }
+    }
+
+    /// One exponential step of length h (cos/sin of h/2 given) for an
+    /// isotropic stiffness, or None where it does not apply (the stress
+    /// direction more than π/2 from the slip direction, or v = 0).
+    ///
+    /// With φ = α − θ the angle of the stress direction n behind the slip
+    /// direction v̂ (angle α), dθ/ds = κ·sin φ (κ = (2/3)|v|), and
+    /// t = tan(φ/2) obeys the Riccati equation t' = β(1 + t²) − κ·t,
+    /// β = α'/2. Cox and Matthews' exponential RK4 (ETDRK4) with the linear
+    /// part −κ̄·t frozen at the step's midpoint integrates the relaxation
+    /// exactly; the rest, β(1 + t²) − (κ − κ̄)·t, is small and smooth where
+    /// the slip direction turns slowly. The strip sums are integrated with
+    /// the same stages (weights 1/6, 1/3, 1/3, 1/6: the method's weights
+    /// for a component without linear part), as in [`Strip::rk4`].
+    #[inline(never)]
+    pub(super) fn etd(&self, p: &PState, h: f64, c2: f64, s2: f64) -> Option<PState> {
+        let c = self.c;
+        let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
+        let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
+        let a = self.a;
+        let aq = 0.5 * a * self.q2 * c;
+        // (κ, β, v̂) at a node.
+        let node = |sn: f64, cs: f64| {
+            let vy = self.vy(c * sn);
+            let v2 = a * a + vy * vy;
+            let r = v2.sqrt();
+            ((2.0 / 3.0) * r, aq * cs / v2, a / r, vy / r)
+        };
+        let (k0, b0, ux0, uy0) = node(p.sn, p.cs);
+        let (km, bm, uxm, uym) = node(sm, cm);
+        let (k1, b1, ux1, uy1) = node(s1, c1);
+        // v ≠ 0 at the nodes, and the slip direction turning by less than
+        // π/2 between them (t is measured from it; a segment qualifies only
+        // where it turns slowly, so this is a guard).
+        if !(k0 > 0.0 && km > 0.0 && k1 > 0.0)
+            || ux0 * uxm + uy0 * uym <= 0.0
+            || uxm * ux1 + uym * uy1 <= 0.0
+        {
+            return None;
+        }
+        let cphi = ux0 * p.nx + uy0 * p.ny;
+        if cphi.is_nan() || cphi < 0.0 {
+            return None;
+        }
+        let t0 = (uy0 * p.nx - ux0 * p.ny) / (1.0 + cphi);
+        let z = -km * h;
+        let e2 = (0.5 * z).exp();
+        let e = e2 * e2;
+        let (q1, _, _) = phi_functions(0.5 * z, e2);
+        let q = 0.5 * h * q1;
+        let (f1, f2, f3) = {
+            let (p1, p2, p3) = phi_functions(z, e);
+            (p1 - 3.0 * p2 + 4.0 * p3, p2 - 2.0 * p3, 4.0 * p3 - p2)
+        };
+        let nl = |b: f64, k: f64, t: f64| b * (1.0 + t * t) - (k - km) * t;
+        let n0 = nl(b0, k0, t0);
+        let ta = e2 * t0 + q * n0;
+        let na = nl(bm, km, ta);
+        let tb = e2 * t0 + q * na;
+        let nb = nl(bm, km, tb);
+        let tc = e2 * ta + q * (2.0 * nb - n0);
+        let nc = nl(b1, k1, tc);
+        let t1 = e * t0 + h * (f1 * n0 + 2.0 * f2 * (na + nb) + f3 * nc);
+        if !(t1.abs() <= 1.0 && ta.abs() <= 1.0 && tb.abs() <= 1.0 && tc.abs() <= 1.0) {
+            return None;
+        }
+        // n = v̂ rotated by −φ: cos φ = (1 − t²)/(1 + t²), sin φ = 2t/(1 + t²).
+        let dir = |t: f64, ux: f64, uy: f64| {
+            let d = 1.0 / (1.0 + t * t);
+            let (cp, sp) = ((1.0 - t * t) * d, 2.0 * t * d);
+            (ux * cp + uy * sp, uy * cp - ux * sp)
+        };
+        let (nax, nay) = dir(ta, uxm, uym);
+        let (nbx, nby) = dir(tb, uxm, uym);
+        let (ncx, ncy) = dir(tc, ux1, uy1);
+        let (nx, ny) = dir(t1, ux1, uy1);
+        let w = 1.5 * c * c;
+        let (w0, wm, w1) = (w * p.cs * p.cs, w * cm * cm, w * c1 * c1);
+        let (x0, xm, x1) = (c * p.sn, c * sm, c * s1);
+        let (mx, my) = (2.0 * wm * (nax + nbx), 2.0 * wm * (nay + nby));
+        let h6 = h / 6.0;
+        let mut acc = p.acc;
+        acc.ix += h6 * (w0 * p.nx + mx + w1 * ncx);
+        acc.iy += h6 * (w0 * p.ny + my + w1 * ncy);
+        acc.ixy += h6 * (x0 * w0 * p.ny + xm * my + x1 * w1 * ncy);
+        Some(PState {
+            sn: s1,
+            cs: c1,
+            nx,
+            ny,
+            acc,
+        })
+    }
+
+    /// Quasi-steady direction (stiff limit): v̂ rotated by −asin(α'/κ).
+    #[inline]
+    fn qs_dir(&self, sn: f64, cs: f64) -> (f64, f64) {
+        let x = self.c * sn;
+        // The stiff limit follows the slip velocity v = (a, vy/gy).
+        let (vx, vy) = (self.a, self.vy(x) / self.gy);
+        let m = vx.hypot(vy);
+        if m == 0.0 || !m.is_finite() {
+            return if m.is_finite() {
+                (1.0, 0.0)
+            } else {
+                (vx.signum() * 0.0 + 1.0, 0.0)
+            };
+        }
+        let (ux, uy) = (vx / m, vy / m);
+        // α' = dα/ds = vx·(dvy/ds)/|v|², κ = (2/3)|v|.
+        let alpha_s = ux * self.q2 / self.gy * self.c * cs / m;
+        let sd = (-alpha_s * 1.5 / m).clamp(-1.0, 1.0);
+        let cd = (1.0 - sd * sd).sqrt();
+        let iso = (ux * cd - uy * sd, ux * sd + uy * cd);
+        if self.gy == 1.0 {
+            return iso;
+        }
+        // Anisotropic stiffness: the quasi-steady direction solves
+        // dθ/ds (theta_rate) = α' — the isotropic formula above only to
+        // leading order (its lag is wrong by O(|gy − 1|/|v|), ≈ 1e-3 in J5 at
+        // |J| ≈ 250). Newton from the isotropic guess, central-difference
+        // derivative; kept only if it converges near the guess.
+        let (sn_, cs_) = (sn, cs);
+        let f = |th: f64| {
+            let (s_, c_) = th.sin_cos();
+            self.theta_rate(sn_, cs_, c_, s_) - alpha_s
+        };
+        let th0 = iso.1.atan2(iso.0);
+        let mut th = th0;
+        for _ in 0..QS_NEWTON_ITERATIONS {
+            let e = QS_DIFF_STEP;
+            let d = (f(th + e) - f(th - e)) / (2.0 * e);
+            if d == 0.0 || !d.is_finite() {
+                return iso;
+            }
+            let step = f(th) / d;
+            th -= step;
+            if !th.is_finite() || (th - th0).abs() > QS_MAX_CORRECTION {
+                return iso;
+            }
+            if step.abs() < QS_NEWTON_TOL {
+                break;
+            }
+        }
+        let (s_, c_) = th.sin_cos();
+        (c_, s_)
+    }
+
+    /// (κ·h, |α'|·h) bounds over a step from s0 to s1: κ = (2/3)|v| is
+    /// largest at an end (vy is linear in X), the rotation rate
+    /// α' = a·q2·c·cos s/|v|² largest where |vy| is smallest.
+    #[inline]
+    pub(super) fn rates<const ISO: bool>(
+        &self,
+        sn0: f64,
+        cs0: f64,
+        sn1: f64,
+        cs1: f64,
+        h: f64,
+    ) -> (f64, f64) {
+        let (vy0, vy1) = (self.vy(self.c * sn0), self.vy(self.c * sn1));
+        let a2 = self.a * self.a;
+        let mut kh = (2.0 / 3.0) * (a2 + vy0.abs().max(vy1.abs()).powi(2)).sqrt() * h;
+        if !self.iso::<ISO>() {
+            // The λ·t·G·n part of `theta_rate` relaxes θ too: bound its rate
+            // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s) (tan s largest at s1).
+            let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
+            kh *= 1.0 + f;
+            kh += (2.0 / 3.0) * f * 1.5 * sn1.abs() / cs1.max(CS_MIN) * h;
+        }
+        // The slip direction v = (a, vy/gy) turns at
+        // α' = a·(q2/gy)·c·cos s/(a² + (vy/gy)²).
+        let (vy0, vy1, q2) = (vy0 / self.gy, vy1 / self.gy, self.q2 / self.gy);
+        // Selects rather than branches (the crossing of vy = 0 is not
+        // predictable along a strip near the pole).
+        let cross = (vy0 < 0.0) != (vy1 < 0.0);
+        let vmin = if cross { 0.0 } else { vy0.abs().min(vy1.abs()) };
+        let cmax = if cross { 1.0 } else { cs0.max(cs1) };
+        let num = (self.a * q2 * self.c).abs() * cmax * h;
+        let den = a2 + vmin * vmin;
+        // num ≥ 0 and den ≥ 0: num/den is +∞ where den = 0 < num.
+        let ah = if num == 0.0 { 0.0 } else { num / den };
+        (kh, ah)
+    }
+
+    /// Quasi-steady direction over h (stiff limit), Simpson's rule.
+    pub(super) fn quasi_steady(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+        let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
+        let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
+        // Quasi-steady branch, Simpson's rule.
+        let nm = self.qs_dir(sm, cm);
+        let n1 = self.qs_dir(s1, c1);
+        let n0 = (p.nx, p.ny);
+        let a0 = self.deriv(p.sn, p.cs, n0.0, n0.1);
+        let am = self.deriv(sm, cm, nm.0, nm.1);
+        let a1 = self.deriv(s1, c1, n1.0, n1.1);
+        let h6 = h / 6.0;
+        let mut acc = p.acc;
+        acc.ix += h6 * (a0.ix + 4.0 * am.ix + a1.ix);
+        acc.iy += h6 * (a0.iy + 4.0 * am.iy + a1.iy);
+        acc.ixy += h6 * (a0.ixy + 4.0 * am.ixy + a1.ixy);
+        PState {
+            sn: s1,
+            cs: c1,
+            nx: n1.0,
+            ny: n1.1,
+            acc,
+        }
+    }
+}
+
+/// (1 − w)·a + w·b of two plastic states at the same s (b's), the direction
+/// normalised.
+pub(super) fn blend(a: &PState, b: &PState, w: f64) -> PState {
+    let v = 1.0 - w;
+    let (nx, ny) = (v * a.nx + w * b.nx, v * a.ny + w * b.ny);
+    let r = (nx * nx + ny * ny).sqrt();
+    let acc = StripSums {
+        ix: v * a.acc.ix + w * b.acc.ix,
+        iy: v * a.acc.iy + w * b.acc.iy,
+        ixy: v * a.acc.ixy + w * b.acc.ixy,
+    };
+    PState {
+        nx: nx / r,
+        ny: ny / r,
+        acc,
+        ..*b
+    }
+}
+
+/// 1/(j + 3)! for j = 0..12: the Taylor coefficients of φ3.
+const PHI3_SERIES: [f64; 12] = [
+    1.0 / 6.0,
+    1.0 / 24.0,
+    1.0 / 120.0,
+    1.0 / 720.0,
+    1.0 / 5040.0,
+    1.0 / 40320.0,
+    1.0 / 362880.0,
+    1.0 / 3628800.0,
+    1.0 / 39916800.0,
+    1.0 / 479001600.0,
+    1.0 / 6227020800.0,
+    1.0 / 87178291200.0,
+];
+
+/// φ1, φ2, φ3 of z (φ1 = (eᶻ − 1)/z, φ2 = (φ1 − 1)/z, φ3 = (φ2 − 1/2)/z),
+/// given e = eᶻ: the recurrences for |z| ≥ 1/2 (where their cancellation
+/// costs at most a few ulps), else φ3's Taylor series Σ zʲ/(j + 3)! to z¹¹
+/// (the first omitted term, 0.5¹²/15! ≈ 2e-16, is below φ3's ulp) and
+/// φ2 = 1/2 + z·φ3, φ1 = 1 + z·φ2.
+#[inline]
+pub(super) fn phi_functions(z: f64, e: f64) -> (f64, f64, f64) {
+    if z.abs() >= 0.5 {
+        let p1 = (e - 1.0) / z;
+        let p2 = (p1 - 1.0) / z;
+        let p3 = (p2 - 0.5) / z;
+        return (p1, p2, p3);
+    }
+    let mut p3 = 0.0;
+    for &c in PHI3_SERIES.iter().rev() {
+        p3 = p3 * z + c;
+    }
+    let p2 = 0.5 + z * p3;
+    let p1 = 1.0 + z * p2;
+    (p1, p2, p3)
+}

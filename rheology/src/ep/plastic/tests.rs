@@ -1,0 +1,371 @@
+//! Tests of the plastic segments: the φ-functions and the fifth-order
+//! tableau of the one-step rules (`rules.rs`), the continuity of
+//! `Strip::advance` across its step kinds, and the convergence of the
+//! segment driver's long, fifth-order and exponential steps (`mod.rs`)
+//! against fine RK4.
+
+use super::super::Scaled;
+use super::rules::phi_functions;
+
+/// φ3 by its Taylor series to 80 terms (for |z| ≤ 2 all terms are
+/// ≤ 1/6, so the sum is good to a few ulps).
+fn phi3_series(z: f64) -> f64 {
+    let (mut term, mut sum) = (1.0 / 6.0, 0.0);
+    for j in 0..80 {
+        sum += term;
+        term *= z / (j as f64 + 4.0);
+    }
+    sum
+}
+
+#[test]
+fn phi_functions_match_their_series() {
+    // Both branches (series below |z| = 1/2, recurrences above) against
+    // the long series: relative 1e-13 (the recurrences lose ≲ 3 digits
+    // to cancellation at |z| = 1/2, none for |z| ≥ 2).
+    for z in [-2.0, -0.51, -0.5, -0.49, -0.1, -1e-9, 0.0, 0.3, 0.7] {
+        let (p1, p2, p3) = phi_functions(z, f64::exp(z));
+        let r3 = phi3_series(z);
+        let r2 = 0.5 + z * r3;
+        let r1 = 1.0 + z * r2;
+        for (a, b) in [(p1, r1), (p2, r2), (p3, r3)] {
+            assert!((a - b).abs() <= 1e-13 * b.abs(), "z = {z}: {a} vs {b}");
+        }
+    }
+}
+
+/// `advance` from a fixed state over steps h that cross the thresholds
+/// of its step kinds: a single RK4 step up to κ·h = 1.5 (the bound of
+/// `rates`), ⌈κ·h/1.5⌉ RK4 sub-steps beyond, the quasi-steady step
+/// blended in from κ·h = 16 to 18.
+#[test]
+fn advance_is_continuous_across_its_step_kinds() {
+    use super::{KAPPA_H, KAPPA_H_STIFF, MAX_SUB, PState, QS_BLEND, StripSums};
+    // k = 0.07, J = (0.11, 1.93, −25), the strip at Y = 0.3 (q2 ≈ −357):
+    // from s0 = 0.2, κ = (2/3)|v| grows from ≈ 41 along the step.
+    let st = Scaled::new(0.07, 0.11, 1.93, -25.0, 0.0).strip(0.3);
+    let (sn, cs) = 0.2f64.sin_cos();
+    let vy = st.b1 + st.q2 * st.c * sn;
+    let alpha = vy.atan2(st.a) - 0.05;
+    let p = PState {
+        sn,
+        cs,
+        nx: alpha.cos(),
+        ny: alpha.sin(),
+        acc: StripSums::default(),
+    };
+    let kh = |h: f64| {
+        let (s1, c1) = (0.2 + h).sin_cos();
+        st.rates::<true>(sn, cs, s1, c1, h).0
+    };
+    let go = |h: f64| {
+        let (s2, c2) = super::sin_cos_small(0.5 * h);
+        let q = st.advance::<true>(&p, h, c2, s2, f64::INFINITY, None);
+        [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
+    };
+    let qs = MAX_SUB as f64 * KAPPA_H;
+    let mut thresholds: Vec<f64> = (1..)
+        .map(|m| m as f64 * KAPPA_H_STIFF)
+        .take_while(|&x| x < qs)
+        .collect();
+    thresholds.extend([qs, QS_BLEND * qs]);
+    for target in thresholds {
+        // h where the bound κ·h reaches the threshold (bisection).
+        let (mut lo, mut hi) = (1e-4, 0.5);
+        assert!(kh(lo) < target && kh(hi) > target, "{target}");
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if kh(mid) < target { lo = mid } else { hi = mid }
+        }
+        // Six points 1e-8·h apart, the threshold between the third and
+        // the fourth: the difference across it must match those on
+        // either side to within the curvature (≈ 1e-16 here) and
+        // round-off. Equal sub-steps (⌈κ·h/2⌉ of them) and a switch to
+        // the quasi-steady step without the blend jumped by 4e-5…8e-3
+        // in the strip sums and n there (measured, docs/decisions/0082).
+        let d = 1e-8 * lo;
+        let v: Vec<[f64; 5]> = (0..6).map(|i| go(lo + (i as f64 - 2.5) * d)).collect();
+        for j in 0..5 {
+            let df: Vec<f64> = v.windows(2).map(|w| w[1][j] - w[0][j]).collect();
+            let across = df[2] - 0.5 * (df[1] + df[3]);
+            assert!(
+                across.abs() < 1e-12,
+                "κ·h = {target}, component {j}: {across:e} ({df:?})"
+            );
+        }
+    }
+}
+
+/// max |Δ| over the three strip sums.
+fn dist(a: &super::StripSums, b: &super::StripSums) -> f64 {
+    (a.ix - b.ix)
+        .abs()
+        .max((a.iy - b.iy).abs())
+        .max((a.ixy - b.ixy).abs())
+}
+
+#[test]
+fn long_steps_on_slow_non_stiff_segments_converge() {
+    // Case m of the bench set (k = 1, J = (1.5, 0.3, 2)): its plastic
+    // segments are non-stiff, and where κ·h ≤ KAPPA_H_LONG at
+    // LONG_FACTOR times the longer step `integrate_etd` takes RK4 steps
+    // of that length (0.3 at the s-step 0.1 of tol = 1e-3). Reference:
+    // RK4 at h = 0.0005 (error ~1e-14). Measured strip errors
+    // 3.5e-5…8.4e-5 (steps of 0.2: 9.8e-6…1.8e-5); the bound 1e-4 is
+    // tol/10 at the tolerance these steps are used for. Halving the
+    // s-step (all steps halved) must cut the error ≥ 8-fold (RK4:
+    // 16-fold; measured 12.5–19). That the long steps were taken is
+    // checked by the result differing from the steps of 0.2 by > 1e-7.
+    let sc = Scaled::new(1.0, 1.5, 0.3, 2.0, 0.0);
+    for y in [-0.6, -0.3, 0.0, 0.3] {
+        let st = sc.strip(y);
+        let r = st.integrate(0.0005, 0.0005);
+        let e = st.integrate_etd(0.1, 0.2, 0.4).0;
+        let err = dist(&e, &r);
+        assert!(err < 1e-4, "Y = {y}: {err:e}");
+        assert!(dist(&e, &st.integrate(0.1, 0.2)) > 1e-7, "Y = {y}");
+        let err2 = dist(&st.integrate_etd(0.05, 0.1, 0.2).0, &r);
+        assert!(err2 < err / 8.0, "Y = {y}: {err:e} → {err2:e}");
+    }
+}
+
+#[test]
+fn fifth_order_tableau_satisfies_the_order_conditions() {
+    // The 17 conditions Σ b·Φ(t) = 1/γ(t) of the rooted trees t with at
+    // most 5 vertices, in exact binary fractions up to rounding: 1e-15.
+    // a_ij (i > j) row by row, as in `Strip::rk5`'s documentation.
+    let a: [[f64; 5]; 6] = [
+        [0.0; 5],
+        [0.25, 0.0, 0.0, 0.0, 0.0],
+        [0.125, 0.125, 0.0, 0.0, 0.0],
+        [0.0, -0.5, 1.0, 0.0, 0.0],
+        [3.0 / 16.0, 0.0, 0.0, 9.0 / 16.0, 0.0],
+        [-3.0 / 7.0, 2.0 / 7.0, 12.0 / 7.0, -12.0 / 7.0, 8.0 / 7.0],
+    ];
+    let b = [
+        7.0 / 90.0,
+        0.0,
+        32.0 / 90.0,
+        12.0 / 90.0,
+        32.0 / 90.0,
+        7.0 / 90.0,
+    ];
+    let c: Vec<f64> = a.iter().map(|r| r.iter().sum()).collect();
+    assert_eq!(c, [0.0, 0.25, 0.25, 0.5, 0.75, 1.0]);
+    let am = |v: &[f64]| -> Vec<f64> {
+        (0..6)
+            .map(|i| (0..5).map(|j| a[i][j] * v[j]).sum())
+            .collect()
+    };
+    let mul = |u: &[f64], v: &[f64]| -> Vec<f64> { u.iter().zip(v).map(|(x, y)| x * y).collect() };
+    let bsum = |v: &[f64]| -> f64 { b.iter().zip(v).map(|(x, y)| x * y).sum() };
+    let one = vec![1.0; 6];
+    let c2 = mul(&c, &c);
+    let c3 = mul(&c2, &c);
+    let ac = am(&c);
+    let ac2 = am(&c2);
+    let aac = am(&ac);
+    let conditions = [
+        (bsum(&one), 1.0),
+        (bsum(&c), 1.0 / 2.0),
+        (bsum(&c2), 1.0 / 3.0),
+        (bsum(&ac), 1.0 / 6.0),
+        (bsum(&c3), 1.0 / 4.0),
+        (bsum(&mul(&c, &ac)), 1.0 / 8.0),
+        (bsum(&ac2), 1.0 / 12.0),
+        (bsum(&aac), 1.0 / 24.0),
+        (bsum(&mul(&c3, &c)), 1.0 / 5.0),
+        (bsum(&mul(&c2, &ac)), 1.0 / 10.0),
+        (bsum(&mul(&c, &ac2)), 1.0 / 15.0),
+        (bsum(&mul(&c, &aac)), 1.0 / 30.0),
+        (bsum(&mul(&ac, &ac)), 1.0 / 20.0),
+        (bsum(&am(&c3)), 1.0 / 20.0),
+        (bsum(&am(&mul(&c, &ac))), 1.0 / 40.0),
+        (bsum(&am(&ac2)), 1.0 / 60.0),
+        (bsum(&am(&aac)), 1.0 / 120.0),
+    ];
+    for (k, (got, want)) in conditions.iter().enumerate() {
+        assert!(
+            (got - want).abs() < 1e-15,
+            "condition {k}: {got} against {want}"
+        );
+    }
+}
+
+/// `n` equal steps of `Strip::rk4` or `Strip::rk5` from (sn, cs, n0)
+/// to the outlet (no unloading test).
+fn segment(st: &super::Strip, sn: f64, n0: (f64, f64), fifth: bool, n: usize) -> super::PState {
+    use super::{PState, StripSums};
+    let h = (std::f64::consts::FRAC_PI_2 - sn.asin()) / n as f64;
+    let cs = (1.0 - sn * sn).sqrt();
+    let mut p = PState {
+        sn,
+        cs,
+        nx: n0.0,
+        ny: n0.1,
+        acc: StripSums::default(),
+    };
+    for _ in 0..n {
+        p = if fifth {
+            let (s4, c4) = super::sin_cos_small(0.25 * h);
+            st.rk5::<true>(&p, h, c4, s4)
+        } else {
+            let (s2, c2) = super::sin_cos_small(0.5 * h);
+            st.rk4::<true>(&p, h, c2, s2)
+        };
+    }
+    p
+}
+
+/// The first plastic state of a strip (yield point and direction).
+fn first_yield(st: &super::Strip) -> (f64, (f64, f64)) {
+    let mut first = None;
+    st.integrate_rec(0.01, 0.01, &mut |e| {
+        if let (None, super::Event::Plastic { x, n }) = (first, e) {
+            first = Some((x / st.c, n));
+        }
+    });
+    first.expect("the strip yields")
+}
+
+/// A strip integrated at `steps` (`integrate_with`): its sums, the
+/// plastic states of its first plastic segment and the elastic segments
+/// after them, the span in s from its first yield point to the outlet
+/// and the relaxation rate κ at that point.
+fn first_segment(
+    st: &super::Strip,
+    steps: (f64, f64, f64, bool),
+) -> (super::StripSums, usize, usize, f64, f64) {
+    let (mut states, mut segments) = (0, 0);
+    let (e, _) = st.integrate_with(steps, &mut |ev| match ev {
+        super::Event::Plastic { .. } if segments == 0 => states += 1,
+        super::Event::Elastic { .. } if states > 0 => segments += 1,
+        _ => {}
+    });
+    let (sn, _) = first_yield(st);
+    let span = std::f64::consts::FRAC_PI_2 - sn.asin();
+    let kr = st
+        .rates::<true>(sn, (1.0 - sn * sn).sqrt(), 1.0, 0.0, 1.0)
+        .0;
+    (e, states, segments, span, kr)
+}
+
+#[test]
+fn fifth_order_rule_converges_at_fifth_order() {
+    // Case a of the bench set (k = 0.5, J = (2, −1, 10)): from the first
+    // yield point to the outlet (span ≈ 3, κ = (2/3)|v| up to 9–13),
+    // `Strip::rk5` in n = 60 and 120 equal steps (h ≈ 0.05, 0.025)
+    // against RK4 in 20000 steps (error ~1e-15). Halving the step must
+    // cut the error of the strip sums ≥ 24-fold (fifth order: 32;
+    // measured 32–36; RK4 gives ≈ 16), and the rule must beat RK4 at
+    // the same step ≥ 20-fold (measured 44–90).
+    let sc = Scaled::new(0.5, 2.0, -1.0, 10.0, 0.0);
+    for y in [-0.7, 0.4, 0.8] {
+        let st = sc.strip(y);
+        let (sn, n0) = first_yield(&st);
+        let r = segment(&st, sn, n0, false, 20000).acc;
+        let e1 = dist(&segment(&st, sn, n0, true, 60).acc, &r);
+        let e2 = dist(&segment(&st, sn, n0, true, 120).acc, &r);
+        let e4 = dist(&segment(&st, sn, n0, false, 60).acc, &r);
+        assert!(e2 < e1 / 24.0, "Y = {y}: {e1:e} → {e2:e}");
+        assert!(e1 < e4 / 20.0, "Y = {y}: {e1:e} against RK4 {e4:e}");
+    }
+}
+
+#[test]
+fn fifth_order_steps_on_moderately_stiff_segments() {
+    // Case a again: on strips with Y ≈ −0.9…−0.55 its plastic segment
+    // (from yield to the outlet, span ≈ 2.95) relaxes at κ·h ≈ 2.1–2.8
+    // at the longer s-step 0.2 of tol = 1e-3, stiff for RK4 (margin
+    // KAPPA_H = 2), so `integrate_etd` takes it in equal fifth-order
+    // steps of ≈ 0.2 (κ·h ≤ RK5_KAPPA_H_STIFF) instead of RK4 at the
+    // s-step 0.1 with the graded start: one plastic state per step of
+    // 0.2 (the RK4 path records about twice as many), and κ·h > KAPPA_H
+    // rules out RK4's non-stiff steps of the same length. Reference: RK4
+    // at h = 0.0005 (error ~1e-14). Measured strip errors 3.1e-6,
+    // 2.7e-5, 4.6e-5 (the RK4 path: 9.8e-6, 1.2e-5, 2.9e-5; the largest
+    // of case a's strips, 3.3e-4 at Y = 0.45, is not on this path); the
+    // bound 1e-4 is tol/10 at the tolerance these steps are used for.
+    use super::KAPPA_H;
+    let sc = Scaled::new(0.5, 2.0, -1.0, 10.0, 0.0);
+    for y in [-0.9, -0.7, -0.55] {
+        let st = sc.strip(y);
+        let (e, states, segments, span, kr) = first_segment(&st, (0.1, 0.2, 0.4, true));
+        let nsteps = (span / 0.2).ceil();
+        let kh = kr * span / nsteps;
+        assert!(
+            kh > KAPPA_H && kh <= super::RK5_KAPPA_H_STIFF,
+            "Y = {y}: κ·h = {kh}"
+        );
+        assert_eq!((states, segments), (nsteps as usize + 1, 0), "Y = {y}");
+        let err = dist(&e, &st.integrate(0.0005, 0.0005));
+        assert!(err < 1e-4, "Y = {y}: {err:e}");
+    }
+}
+
+#[test]
+fn fifth_order_steps_at_the_s_step_on_stiffer_segments() {
+    // Case h of the bench set (k = 5, J = (0, 3.37, 25.8)) at the steps
+    // of tol = 1e-2 (s-step 0.178, longer step 0.356, exponential step
+    // 0.8): on strips with |Y| ≈ 0.65…0.9 the plastic segment (span
+    // ≈ 3) has κ·h 3.9–5.3 at the longer step and 2.05–2.8 at the
+    // s-step, and no exponential steps (the slip direction turns too
+    // fast), so it takes 17 equal fifth-order steps of the s-step: one
+    // plastic state per step. Reference: RK4 at h = 0.0005. Measured
+    // strip errors 1.4e-7…4.8e-7 at Y = −0.9, −0.7, 0.8; the bound 1e-3
+    // is tol/10.
+    use super::{KAPPA_H, RK5_KAPPA_H_STIFF};
+    let s_step = 0.1 * 10f64.powf(0.25);
+    let sc = Scaled::new(5.0, 0.0, 3.368, 25.816, 0.0);
+    for y in [-0.9, -0.7, 0.8] {
+        let st = sc.strip(y);
+        let steps = (s_step, 2.0 * s_step, 0.8, true);
+        let (e, states, segments, span, kr) = first_segment(&st, steps);
+        let (n1, n2) = ((span / s_step).ceil(), (span / (2.0 * s_step)).ceil());
+        let (kh1, kh2) = (kr * span / n1, kr * span / n2);
+        assert!(
+            kh2 > RK5_KAPPA_H_STIFF,
+            "Y = {y}: κ·h = {kh2} at the longer step"
+        );
+        assert!(
+            kh1 > KAPPA_H && kh1 <= RK5_KAPPA_H_STIFF,
+            "Y = {y}: κ·h = {kh1}"
+        );
+        assert_eq!((states, segments), (n1 as usize + 1, 0), "Y = {y}");
+        let err = dist(&e, &st.integrate(0.0005, 0.0005));
+        assert!(err < 1e-3, "Y = {y}: {err:e}");
+    }
+}
+
+#[test]
+fn exponential_steps_match_fine_rk4_on_stiff_strips() {
+    // Case s of the bench set (k = 20, J = (0.5, 2, 40)): strips away
+    // from the spin pole's strip (Y_p ≈ 0.003) have stiff plastic
+    // segments (κ = (2/3)|v| up to 11–24) on which the slip direction
+    // turns slowly; `integrate_etd` takes exponential steps there (0.4,
+    // the step at tol = 1e-3) instead of RK4 at the s-step 0.1 with
+    // sub-steps. Reference: RK4 at h = 0.001 (error ~1e-14). Measured
+    // strip errors 1.5e-6…4.7e-5 (RK4 at the s-step: 2e-9…2e-7); the
+    // bound 1e-4 is tol/10 at the tolerance the step is used for. The
+    // exponential step is second order where κ·h ≫ 1 (ETDRK4's stiff
+    // order reduction; hence a step ∝ √tol): halving it (with the
+    // s-step halved too, so that the segments still qualify) must cut
+    // the error ≥ 3-fold at Y = −0.8 and 0.9 (measured 5.1 and 4.8).
+    // That the exponential path was taken is checked by its result
+    // differing from plain RK4 at the same s-steps by > 1e-9.
+    let sc = Scaled::new(20.0, 0.5, 2.0, 40.0, 0.0);
+    for y in [-0.8, -0.4, 0.5, 0.9] {
+        let st = sc.strip(y);
+        let r = st.integrate(0.001, 0.001);
+        let e = st.integrate_etd(0.1, 0.2, 0.4).0;
+        let err = dist(&e, &r);
+        assert!(err < 1e-4, "Y = {y}: {err:e}");
+        assert!(dist(&e, &st.integrate(0.1, 0.2)) > 1e-9, "Y = {y}");
+        if y == -0.8 || y == 0.9 {
+            let e2 = st.integrate_etd(0.05, 0.1, 0.2).0;
+            let err2 = dist(&e2, &r);
+            assert!(dist(&e2, &st.integrate(0.05, 0.1)) > 1e-9, "Y = {y}");
+            assert!(err2 < err / 3.0, "Y = {y}: {err:e} → {err2:e}");
+        }
+    }
+}

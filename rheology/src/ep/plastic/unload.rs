@@ -1,0 +1,142 @@
+//! The end of a plastic segment by elastic unloading. After each step the
+//! segment driver's `Strip::step_end` (`mod.rs`) evaluates g = (v·n)·cos s +
+//! (3/2)·sin s at the step's end; where it is negative, unloading started
+//! inside the step and [`Strip::locate_unload`] finds where: the root of
+//! g's cubic Hermite interpolant over the step ([`hermite_root`], with
+//! dg/ds from [`Strip::g_rate`]) as the first trial length, then Newton
+//! with the exact dg/ds of the integrated state, safeguarded by regula
+//! falsi. The strip integration then goes on elastically from there.
+
+use super::super::{PState, Strip};
+use super::TURN_PER_STEP;
+use super::rules::sin_cos_small;
+
+/// Largest number of iterations (integrations of the step) locating the
+/// start of unloading.
+const UNLOAD_ITERATIONS: usize = 6;
+/// Largest number of Newton steps on the cubic Hermite interpolant of g over
+/// a step (its root is the first iterate locating unloading; only scalar
+/// arithmetic, no integration).
+const HERMITE_ITERATIONS: usize = 8;
+/// |g| below which the start of unloading counts as located.
+const UNLOAD_G_TOL: f64 = 1e-13;
+/// Error in s of the start of unloading accepted per s-step⁴: the Newton
+/// iteration of [`Strip::locate_unload`] stops once its next correction
+/// |g/g'| is at most this times s_step⁴, as the yield search does
+/// (`ROOT_TOL_PER_STEP4` in yield_point.rs): the RK4 steps' error is
+/// ≈ 10·s_step⁴ (the tolerance), and the strip sums change by ≈ |Z| times
+/// the location error. At tol 1e-3 cases p, b, c take 3.8, 1.5, 1.4 %
+/// fewer instructions, the worst error/tol of `cargo xtask ep-sets` is
+/// unchanged (docs/decisions/0079).
+const UNLOAD_ROOT_PER_STEP4: f64 = 1e-3;
+
+impl Strip {
+    /// dg/ds along the plastic flow at a state on the limit: with
+    /// g = (a·nx + vy·ny)·cos s + (3/2)·sin s, dn/ds = θ'·(−ny, nx) and
+    /// dvy/ds = q2·c·cos s.
+    #[inline]
+    pub(in crate::ep) fn g_rate(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
+        let vy = self.vy(self.c * sn);
+        let th = self.theta_rate(sn, cs, nx, ny);
+        let dvn = th * (vy * nx - self.a * ny) + self.q2 * self.c * cs * ny;
+        dvn * cs - (self.a * nx + vy * ny) * sn + 1.5 * cs
+    }
+
+    /// The state where unloading begins inside the step of length `h` from
+    /// `p` to `q` (g ≥ 0 at its start, g = `g1` < 0 at its end), found on the
+    /// integrated g of the step shortened to t: the first t is the root of
+    /// the cubic Hermite interpolant of g over the step (g and dg/ds at both
+    /// ends, [`Strip::g_rate`]), the next ones Newton steps with the exact
+    /// dg/ds of the state reached, each kept inside the bracket (regula
+    /// falsi, Illinois, where it would leave it); at most
+    /// [`UNLOAD_ITERATIONS`] integrations or until |g| < [`UNLOAD_G_TOL`] or
+    /// the next Newton correction is below [`UNLOAD_ROOT_PER_STEP4`]·s_step⁴
+    /// (s_step = `a_h`/TURN_PER_STEP). Two integrations (|g| ≈ 1e-8, then
+    /// round-off) without the last criterion, where regula falsi alone took
+    /// 4–5, to the same point.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn locate_unload<const ISO: bool>(
+        &self,
+        p: &PState,
+        q: &PState,
+        h: f64,
+        g1: f64,
+        a_h: f64,
+    ) -> PState {
+        let g0 = self.g(p.sn, p.cs, p.nx, p.ny).max(0.0);
+        let (mut tl, mut gl, mut th, mut gh) = (0.0, g0, h, g1);
+        let mut best = *p;
+        let mut side = 0i32;
+        let s_step = a_h / TURN_PER_STEP;
+        let t_tol = UNLOAD_ROOT_PER_STEP4 * (s_step * s_step) * (s_step * s_step);
+        let mut newton = hermite_root(
+            g0,
+            h * self.g_rate(p.sn, p.cs, p.nx, p.ny),
+            g1,
+            h * self.g_rate(q.sn, q.cs, q.nx, q.ny),
+        ) * h;
+        for _ in 0..UNLOAD_ITERATIONS {
+            let t = if newton > tl && newton < th {
+                newton
+            } else if gl - gh > 0.0 {
+                tl + (th - tl) * gl / (gl - gh)
+            } else {
+                0.5 * (tl + th)
+            };
+            let (st, ct) = sin_cos_small(0.5 * t);
+            let r = self.advance::<ISO>(p, t, ct, st, a_h, None);
+            let gr = self.g(r.sn, r.cs, r.nx, r.ny);
+            best = r;
+            if gr.abs() < UNLOAD_G_TOL {
+                break;
+            }
+            let dg = self.g_rate(r.sn, r.cs, r.nx, r.ny);
+            if (gr / dg).abs() <= t_tol {
+                break;
+            }
+            if gr < 0.0 {
+                th = t;
+                gh = gr;
+                if side == -1 {
+                    gl *= 0.5;
+                }
+                side = -1;
+            } else {
+                tl = t;
+                gl = gr;
+                if side == 1 {
+                    gh *= 0.5;
+                }
+                side = 1;
+            }
+            newton = t - gr / dg;
+        }
+        best
+    }
+}
+
+/// Root in (0, 1) of the cubic Hermite interpolant with values g0, g1 and
+/// derivatives d0, d1 at 0 and 1 (g0 ≥ 0 > g1): Newton from the
+/// regula-falsi point; NaN if an iterate leaves the interval (the caller then
+/// starts with regula falsi), the last iterate if it has not settled within
+/// [`HERMITE_ITERATIONS`] steps (the caller only uses it as a trial point:
+/// the integrated g decides).
+fn hermite_root(g0: f64, d0: f64, g1: f64, d1: f64) -> f64 {
+    // G(u) = g0 + d0·u + c2·u² + c3·u³.
+    let c2 = 3.0 * (g1 - g0) - 2.0 * d0 - d1;
+    let c3 = 2.0 * (g0 - g1) + d0 + d1;
+    let mut u = g0 / (g0 - g1);
+    for _ in 0..HERMITE_ITERATIONS {
+        let gu = g0 + u * (d0 + u * (c2 + u * c3));
+        let du = d0 + u * (2.0 * c2 + 3.0 * u * c3);
+        let step = gu / du;
+        u -= step;
+        if !(u > 0.0 && u < 1.0) {
+            return f64::NAN;
+        }
+        if step.abs() < 1e-14 {
+            return u;
+        }
+    }
+    u
+}
