@@ -60,7 +60,7 @@
 //! * [`Model::Viscoelastic`]: the sinh law (App. V eqs. 3–6) with Deborah
 //!   number D = ηU/(Ḡa) and reference stress Z0 = τ0/τ̄, with the limit L kept
 //!   as a cap; D → ∞ gives the elastic/plastic model exactly (the viscous
-//!   term vanishes), Z0 → ∞ the linear Maxwell fluid (`visco.rs`).
+//!   term vanishes), Z0 → ∞ the linear Maxwell fluid (`visco/`).
 //! * Other property variations (App. IV eq. 8: G pressure-proportional,
 //!   limit constant): [`Model::PropertyVariation`] with [`Properties`], solved by a
 //!   Richardson-extrapolated grid scheme ([`props`], ≈ 1e-4, milliseconds).
@@ -478,7 +478,7 @@ pub(crate) fn rigid_plastic(inp: &Inputs, acc: Accuracy) -> Result<Outputs, Rheo
 /// `z0` = τ0/τ̄ > 0 (`inf` = linear Maxwell fluid). Adaptive fourth-order
 /// Rosenbrock steps along each strip with the cap entries and unloadings
 /// located inside the steps, adaptive Lobatto–Kronrod panels across the
-/// contact (`visco.rs`); within `tol` of the converged solution.
+/// contact (`visco/`); within `tol` of the converged solution.
 pub(crate) fn viscoelastic(
     inp: &Inputs,
     deborah: f64,

@@ -2,6 +2,7 @@
 //! linear Maxwell contact at zero spin, and the former uniform scheme
 //! refined and Richardson-extrapolated (an independent integrator).
 
+use super::segments::Cap;
 use super::*;
 use crate::{Inputs, Resolution};
 
@@ -277,9 +278,9 @@ fn random_scan_against(seed: u64, n: usize, tol_ref: f64) {
         let law = Law::new(z0, d);
         let r = solve(&p, law, tol_ref);
         for (i, tol) in [1e-3, 1e-4].into_iter().enumerate() {
-            let c0 = super::COUNT.with(|c| c.get());
+            let c0 = super::strip::COUNT.with(|c| c.get());
             let v = solve(&p, law, tol);
-            let c1 = super::COUNT.with(|c| c.get());
+            let c1 = super::strip::COUNT.with(|c| c.get());
             cnt[i].0 += c1.0 - c0.0;
             cnt[i].1 += c1.1 - c0.1;
             let e = max_dev(v, r) / tol;
