@@ -2,6 +2,8 @@
 //!
 //! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
 //! - `prof-visco CASE TOL REPS [old|gauss]`: the same for the viscoelastic benches;
+//! - `ir [ep|visco] [TOL [CASE...]]`: instructions per cold evaluation of the
+//!   bench cases under callgrind, (Ir(3) − Ir(1))/2;
 //! - `ep-batch FILE [N [TOL [REPS]]]`: per-row cost of a batch of
 //!   elastic/plastic evaluations (CSV `k,J1,J2,J3`);
 //! - `ep-sets refs|errs FILE [SEED]`, `ep-sets bits [TOL]`, `ep-sets lines
@@ -20,6 +22,7 @@
 
 mod ep_batch;
 mod ep_sets;
+mod ir;
 mod map_budget;
 mod map_check;
 mod prof;
@@ -33,6 +36,10 @@ commands:
                                   the same for the viscoelastic model: CASE m h x l e g
                                   (prof_visco.rs); `old` = the former fixed-grid scheme,
                                   `gauss` = the former Gauss-Legendre panel rule
+  ir [ep|visco] [TOL [CASE...]]   instructions per cold evaluation of the bench cases
+                                  (default all, TOL 1e-3): prof/prof-visco under callgrind
+                                  with 1 and 3 evaluations, (Ir(3) - Ir(1))/2 (ir.rs;
+                                  needs valgrind)
   ep-batch FILE [N [TOL [REPS]]]  per-row wall time (fastest of REPS, default 3) of the
                                   first N rows (default 2000) of a CSV k,J1,J2,J3 at TOL
                                   (default 1e-4), one thread; summary by |J3|/sqrt(k), k
@@ -63,6 +70,7 @@ fn main() -> std::process::ExitCode {
     let result = match args.first().map(String::as_str) {
         Some("ep-batch") => ep_batch::run(&args[1..]),
         Some("ep-sets") => ep_sets::run(&args[1..]),
+        Some("ir") => ir::run(&args[1..]),
         Some("prof") => prof::run(&args[1..]),
         Some("prof-visco") => prof_visco::run(&args[1..]),
         Some("map-check") => map_check::run(&args[1..]),
