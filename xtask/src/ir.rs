@@ -37,10 +37,12 @@ pub fn run(a: &[String]) -> Result<(), String> {
         ));
     }
     let exe = std::env::current_exe().map_err(|e| format!("cannot find this program: {e}"))?;
-    println!("# instructions per evaluation, {model}, tol {tol}: (Ir(3) - Ir(1))/2");
-    for c in cases {
+    for (i, c) in cases.iter().enumerate() {
         let one = collected(&exe, driver, c, tol, 1)?;
         let three = collected(&exe, driver, c, tol, 3)?;
+        if i == 0 {
+            println!("# instructions per evaluation, {model}, tol {tol}: (Ir(3) - Ir(1))/2");
+        }
         println!("{c} {}", three.saturating_sub(one) / 2);
     }
     Ok(())

@@ -139,6 +139,22 @@ struct PState {
     acc: StripSums,
 }
 
+impl PState {
+    /// The state at (sn, cs) with the direction (nx, ny) scaled to unit
+    /// length (a step's rounding and truncation leave |n| ≠ 1).
+    #[inline(always)]
+    fn normalised(sn: f64, cs: f64, (nx, ny): (f64, f64), acc: StripSums) -> Self {
+        let r = (nx * nx + ny * ny).sqrt();
+        PState {
+            sn,
+            cs,
+            nx: nx / r,
+            ny: ny / r,
+            acc,
+        }
+    }
+}
+
 /// What [`Strip::integrate_rec`] reports along a strip.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Event {

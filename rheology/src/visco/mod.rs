@@ -66,7 +66,7 @@
 //! 0087 (panel edges at located kinks), 0088 (exponential and
 //! quasi-steady cap steps) and 0090 (step-size controllers). The former
 //! fixed-grid scheme is kept in
-//! [`reference`] as the tests' independent reference.
+//! [`crate::reference::viscoelastic`] as the tests' independent reference.
 //!
 //! **The files**, in the reader's path: this one holds the panels across
 //! the contact ([`solve`], [`lobatto_kronrod_in_phi`], the initial panel

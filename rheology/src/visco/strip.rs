@@ -12,8 +12,8 @@
 use std::f64::consts::PI;
 
 use super::law::VStrip;
-use super::rosenbrock::{event, event_newton, hermite, hermite_dt, ros_step};
-use super::segments::{Cap, Interior, Pt, Seg};
+use super::rosenbrock::{Step, event, event_newton, hermite, hermite_dt, ros_step};
+use super::segments::{Cap, Eval, Interior, Jac, Pt, Seg};
 
 /// Largest number of cap ↔ interior switches per strip (then the stress
 /// stays on the cap).
@@ -119,6 +119,31 @@ fn first_step(st: &VStrip, atol: f64) -> f64 {
     h
 }
 
+/// The Rosenbrock step from `p` (state `u`, with its rates and Jacobian
+/// `(ev0, jac)`) of length h, or shorter: repeated at `factor`'s shorter
+/// length (at most 0.9·h) until its error is within STEP_ACCEPT·atol, or
+/// taken as it is once the strip has made MAX_STEPS attempts (`steps`
+/// counts them). Returns the step and its length.
+#[inline(always)]
+fn accepted_step<const N: usize, S: Seg<N>>(
+    seg: &S,
+    p: Pt,
+    mut h: f64,
+    u: &[f64; N],
+    (ev0, jac): (&Eval<N>, &Jac<N>),
+    atol: f64,
+    steps: &mut usize,
+) -> (Step<N>, f64) {
+    loop {
+        *steps += 1;
+        let stp = ros_step(seg, p, h, u, ev0, jac);
+        if stp.err <= STEP_ACCEPT * atol || *steps > MAX_STEPS {
+            return (stp, h);
+        }
+        h *= factor(stp.err, atol).min(0.9);
+    }
+}
+
 /// Strip integrals [∫Zx dX, ∫Zy dX, ∫Zy·X dX], step error estimates
 /// ≤ [`STEP_ACCEPT`]·atol (step sizes aimed at 0.66·atol).
 #[allow(clippy::needless_range_loop)]
@@ -156,14 +181,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
         match mode {
             Mode::Interior(z) => {
                 let (ev0, jac) = inter.eval_jac(p, &z);
-                let (stp, h1) = loop {
-                    steps += 1;
-                    let stp = ros_step(&inter, p, h, &z, &ev0, &jac);
-                    if stp.err <= STEP_ACCEPT * atol || steps > MAX_STEPS {
-                        break (stp, h);
-                    }
-                    h *= factor(stp.err, atol).min(0.9);
-                };
+                let (stp, h1) = accepted_step(&inter, p, h, &z, (&ev0, &jac), atol, &mut steps);
                 let last = last && h1 == hmax;
                 let p1 = end_point(stp.p1, last);
                 let l1 = lcap(p1.sn);
@@ -272,14 +290,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                 let u = [th];
                 let cap = Cap::new(st, th, n0);
                 let (ev0, jac) = cap.eval_jac(p, &u);
-                let (stp, h1) = loop {
-                    steps += 1;
-                    let stp = ros_step(&cap, p, h, &u, &ev0, &jac);
-                    if stp.err <= STEP_ACCEPT * atol || steps > MAX_STEPS {
-                        break (stp, h);
-                    }
-                    h *= factor(stp.err, atol).min(0.9);
-                };
+                let (stp, h1) = accepted_step(&cap, p, h, &u, (&ev0, &jac), atol, &mut steps);
                 let last = last && h1 == hmax;
                 let p1 = end_point(stp.p1, last);
                 let lam1 = if switches < MAX_SWITCH && !last {
