@@ -60,6 +60,17 @@ struct Solved {
     dominant: Option<Branch>,
 }
 
+/// The rheology's outputs are finite for finite inputs (its contract, tested
+/// over the whole input range); should a solver failure ever break that, the
+/// caller gets [`ContactError::NonFinite`] naming the first such output, not
+/// NaN forces (a NaN loss would also read as 0 after `max(0.0)`).
+pub(crate) fn finite_outputs(values: &[(&'static str, f64)]) -> Result<(), ContactError> {
+    match values.iter().find(|(_, v)| !v.is_finite()) {
+        Some(&(quantity, value)) => Err(ContactError::NonFinite { quantity, value }),
+        None => Ok(()),
+    }
+}
+
 /// The dimensionless solution of one rolling frame.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Branch {
@@ -538,6 +549,14 @@ impl TractionContact {
         let j = frame(sigma);
         let (j4, j5, j6) = (sigma * lab[0], sigma * lab[1], lab[2]);
         let j7 = (j[0] * j4 + j[1] * j5 + j[2] * j6).max(0.0);
+        finite_outputs(&[
+            ("traction J4", j4),
+            ("side force J5", j5),
+            ("spin torque J6", j6),
+            ("force fx (N)", fx),
+            ("force fy (N)", fy),
+            ("spin moment mz (N m)", mz),
+        ])?;
         Ok(Solved {
             f: [fx, fy, mz],
             loss,

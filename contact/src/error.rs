@@ -54,6 +54,18 @@ pub enum ContactError {
         /// The temperature rise reached, K.
         temperature_rise: f64,
     },
+    /// An output came out NaN or infinite for valid inputs: a failure of
+    /// the solver, not of the inputs (never expected; the message names the
+    /// output, and the state that produced it is worth reporting).
+    #[error(
+        "{quantity} = {value} is not finite: the traction solver failed at this state (an internal error)"
+    )]
+    NonFinite {
+        /// Which output.
+        quantity: &'static str,
+        /// Its value (NaN or ±∞).
+        value: f64,
+    },
     /// The body motion could not be turned into contact kinematics.
     #[error("kinematics")]
     Kinematics(#[from] KinematicsError),

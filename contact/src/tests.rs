@@ -789,6 +789,25 @@ fn errors_name_the_quantity() {
     assert!(msg(e.unwrap_err()).contains("rolling-speed floor"));
 }
 
+#[test]
+fn a_non_finite_solver_output_is_an_error_naming_it() {
+    use crate::contact::finite_outputs;
+    assert_eq!(finite_outputs(&[("a", 1.0), ("b", -2.0)]), Ok(()));
+    let e = finite_outputs(&[("a", 1.0), ("traction J4", f64::NAN), ("c", f64::INFINITY)]);
+    let e = e.unwrap_err();
+    assert!(
+        matches!(
+            e,
+            ContactError::NonFinite {
+                quantity: "traction J4",
+                ..
+            }
+        ),
+        "{e:?}"
+    );
+    assert!(error_chain(&e).contains("traction J4 = NaN is not finite"));
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 

@@ -430,6 +430,73 @@ proptest! {
     }
 }
 
+#[test]
+fn large_spin_at_fine_tolerance_is_finite_and_converged() {
+    // |J3| ~ 1e5: the first initial panels are ~1e-5 wide in φ, and where a
+    // kink's split fell within rounding of a panel's end it left a panel
+    // narrower than an ulp of φ, whose zero change over a zero allowed change
+    // was a NaN share (all outputs NaN at tol 1e-4 for 1.1 % of random
+    // inputs with |J3| up to 1e5). Each case at tol 1e-4 against tol 1e-5:
+    // within 1e-4 (the accuracy contract; observed ≤ 2.1e-7).
+    let cases = [
+        (1.069100152318923, 0.5, 1.0, 1e5),
+        (
+            7.190382039281114,
+            -0.8931895487244706,
+            0.0,
+            477300.90420957765,
+        ),
+        (
+            0.7882195063482941,
+            0.0708010268127570,
+            -0.000920251733574,
+            -91759.59602622077,
+        ),
+        (
+            5.0361559022345705,
+            18147.81245120198,
+            26326.76333916261,
+            85930.91227367379,
+        ),
+    ];
+    for (k, j1, j2, j3) in cases {
+        let i = inp(k, j1, j2, j3);
+        let (a, b) = (ep(&i, 1e-4), ep(&i, 1e-5));
+        let d = (a.j4 - b.j4)
+            .abs()
+            .max((a.j5 - b.j5).abs())
+            .max((a.j6 - b.j6).abs());
+        println!("k={k} J=({j1},{j2},{j3}): {a:?}, |tol 1e-4 − tol 1e-5| = {d:.1e}");
+        assert!(d <= 1e-4, "{a:?} vs {b:?}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Every model at tol 1e-5 … 1e-2, J's log-uniform over 1e-6 … 1e8 (or 0)
+    /// with either sign: every output finite, |(J4, J5)| ≤ 1 + tol (the
+    /// accuracy contract on the exact bound 1).
+    #[test]
+    fn outputs_finite_and_bounded_over_the_whole_range(
+        ltol in -5.0f64..-2.0, lk in -1.3f64..1.3,
+        j in proptest::array::uniform3((proptest::bool::ANY, -6.0f64..8.0, proptest::bool::ANY)),
+        model in 0u32..4, lde in -3.0f64..3.0, z0 in prop_oneof![Just(f64::INFINITY), 0.2f64..5.0],
+    ) {
+        let tol = 10f64.powf(ltol);
+        let j = j.map(|(zero, e, neg)| if zero { 0.0 } else if neg { -(10f64.powf(e)) } else { 10f64.powf(e) });
+        let i = inp(10f64.powf(lk), j[0], j[1], j[2]);
+        let model = match model {
+            0 | 1 => Model::ElasticPlastic,
+            2 => Model::RigidPlastic,
+            _ => Model::Viscoelastic { deborah: 10f64.powf(lde), z0 },
+        };
+        let o = evaluate(&i, model, Accuracy::new(tol).unwrap()).unwrap();
+        prop_assert!(o.j4.is_finite() && o.j5.is_finite() && o.j6.is_finite() && o.j7.is_finite(), "{o:?}");
+        prop_assert!(o.j4.hypot(o.j5) <= 1.0 + tol, "{o:?}");
+    }
+}
+
 /// Nested adaptive Simpson (Richardson-corrected), knowing nothing about
 /// where the integrand turns: an independent reference for the rigid/plastic
 /// solver, whose panels are split and graded at the pole and at vy = 0.

@@ -156,9 +156,13 @@ const BLEND: (f64, f64) = (1.0, 2.0);
 /// BLEND.1 times it, a C¹ smooth step in between (so that a panel's
 /// decision adds no jump in the inputs); 0 at `max_depth` or for a NaN
 /// change. Shared by the elastic/plastic and viscoelastic panel rules.
+///
+/// A panel narrower than an ulp of φ (a kink's split pulled to within
+/// rounding of a panel's end leaves one) has err = allowed = 0: it is
+/// accepted (the quotient would be NaN).
 #[inline]
 pub(crate) fn refine_share(err: f64, allowed: f64, depth: u32, max_depth: u32) -> f64 {
-    if depth >= max_depth || err.is_nan() {
+    if depth >= max_depth || err.is_nan() || err <= BLEND.0 * allowed {
         0.0
     } else {
         smooth_step((err / allowed - BLEND.0) / (BLEND.1 - BLEND.0))
