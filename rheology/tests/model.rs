@@ -471,6 +471,36 @@ fn large_spin_at_fine_tolerance_is_finite_and_converged() {
     }
 }
 
+#[test]
+fn huge_rates_match_the_rigid_plastic_limit() {
+    // |J| up to J_RIGID (1e12; the U → 0 of a contact at standstill with
+    // slip, where the J's are set by the rolling-speed floor): the elastic
+    // zone at the inlet, ≈ 4.5·c/|J|², is shorter than an ulp of X. Its end
+    // was taken from the iteration on the yield quartic, which approached it
+    // by a third per step from the outlet and stopped on an error estimate
+    // valid only near a simple root: the elastic segment ran on to
+    // δX = 4e-7·c at |J1| = 1e10, k = 0.07, and J4 was off by 1.4·tol at
+    // tol 1e-3 (−1.446 at tol 1e-2, beyond the bound 1); the error grew
+    // ∝ |J1| from 1e8. The elastic part of the solution is then O(1/|J|),
+    // so at every tol the result is the rigid/plastic one (tol 1e-6) within
+    // tol (observed ≤ 0.005·tol).
+    for k in [0.0726, 1.0, 5.0] {
+        for e in [8.0, 10.0, 11.9] {
+            let s = 10f64.powf(e);
+            let i = inp(k, -s, -4.7e-4 * s, 1.44e-5 * s);
+            let r = rigid_plastic(&i, Accuracy::new(1e-6).unwrap()).unwrap();
+            for tol in [1e-2, 1e-3, 1e-4] {
+                let o = ep(&i, tol);
+                let d = (o.j4 - r.j4)
+                    .abs()
+                    .max((o.j5 - r.j5).abs())
+                    .max((o.j6 - r.j6).abs());
+                assert!(d <= tol, "k = {k}, |J1| = 1e{e}, tol {tol}: {o:?} vs {r:?}");
+            }
+        }
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 

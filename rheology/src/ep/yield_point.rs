@@ -158,6 +158,23 @@ impl Strip {
                         break;
                     }
                 }
+                // A crossing within rounding of the bracket's low end: the
+                // start and its Halley steps land on it. This is the inlet
+                // (or an unloading's end) at rates |v| ≳ 1e8, where the
+                // elastic segment, ≈ 4.5·c/|v|², is shorter than an ulp of
+                // X. The next float above it is the crossing to round-off
+                // (the strip sums change by ≈ |v|·δX² there); from the
+                // bracket's high end the iteration would approach it by
+                // a third per step and stop early on its error estimate,
+                // which holds only near a simple root (at |J1| = 1e10,
+                // k = 0.07, δX = 4e-7·c: J4 off by 1.4·tol at tol 1e-3).
+                if start <= lo {
+                    let x1 = lo.next_up();
+                    let e = x1 - x0;
+                    if x1 < hi && p0 + e * (p1 + e * (p2 + e * (p3 + e * p4))) >= 0.0 {
+                        return x1;
+                    }
+                }
                 let s2 = s_step * s_step;
                 let root_tol = ROOT_TOL_PER_STEP4 * s2 * s2;
                 return self.refine(x0, [p0, p1, p2, p3, p4], lo, hi, start, root_tol);
