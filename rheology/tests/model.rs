@@ -618,3 +618,86 @@ fn rigid_plastic_matches_a_brute_force_reference() {
         );
     }
 }
+
+/// Worst error/tol at tol 1e-2, 1e-3, 1e-4 against tol 1e-6 over `n` random
+/// cases of the whole input range: k 0.063–10, each J 0 (15 %) or of either
+/// sign up to 1e12 (a common scale 1 … 1e12 times 1e-6 … 1 each: a contact at
+/// U → 0 has J's set by the rolling-speed floor); the viscoelastic model with
+/// D 0.01–100 and Z0 ∞ or 0.3–3.3. Prints the worst case per tol.
+fn wide_range_scan(viscoelastic: bool, seed: u64, n: usize) -> [f64; 3] {
+    let mut s = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    let mut r = move || {
+        // xorshift64.
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let tols = [1e-2, 1e-3, 1e-4];
+    let mut worst = [
+        (0.0_f64, String::new()),
+        (0.0, String::new()),
+        (0.0, String::new()),
+    ];
+    for _ in 0..n {
+        let k = 10f64.powf(-1.2 + 2.2 * r());
+        let big = 10f64.powf(12.0 * r());
+        let mut j = [0.0; 3];
+        for v in j.iter_mut() {
+            *v = if r() < 0.15 {
+                0.0
+            } else {
+                big * 10f64.powf(-6.0 * r()) * if r() < 0.5 { -1.0 } else { 1.0 }
+            };
+        }
+        let i = inp(k, j[0], j[1], j[2]);
+        let model = if viscoelastic {
+            let deborah = 10f64.powf(-2.0 + 4.0 * r());
+            let z0 = if r() < 0.5 {
+                f64::INFINITY
+            } else {
+                0.3 + 3.0 * r()
+            };
+            Model::Viscoelastic { deborah, z0 }
+        } else {
+            Model::ElasticPlastic
+        };
+        let reference = evaluate(&i, model, Accuracy::new(1e-6).unwrap()).unwrap();
+        for (w, tol) in worst.iter_mut().zip(tols) {
+            let o = evaluate(&i, model, Accuracy::new(tol).unwrap()).unwrap();
+            let d = (o.j4 - reference.j4)
+                .abs()
+                .max((o.j5 - reference.j5).abs())
+                .max((o.j6 - reference.j6).abs())
+                / tol;
+            if d > w.0 {
+                *w = (d, format!("k {k:.4} J {j:?} {model:?}"));
+            }
+        }
+    }
+    for (w, tol) in worst.iter().zip(tols) {
+        println!(
+            "seed {seed}, {n} cases, tol {tol:e}: worst error/tol {:.3} ({})",
+            w.0, w.1
+        );
+    }
+    worst.map(|w| w.0)
+}
+
+#[test]
+#[ignore = "12 000 elastic/plastic cases of the whole input range, about 30 s: \
+            cargo test -p traction-rheology --release --test model wide_range -- --ignored --nocapture"]
+fn wide_range_scan_elastic_plastic() {
+    for seed in 2..=5 {
+        assert!(wide_range_scan(false, seed, 3000).iter().all(|&e| e <= 1.0));
+    }
+}
+
+#[test]
+#[ignore = "6000 viscoelastic cases of the whole input range, about 2 min: \
+            cargo test -p traction-rheology --release --test model wide_range -- --ignored --nocapture"]
+fn wide_range_scan_viscoelastic() {
+    for seed in 2..=4 {
+        assert!(wide_range_scan(true, seed, 2000).iter().all(|&e| e <= 1.0));
+    }
+}

@@ -102,6 +102,18 @@ use strip::strip_sums;
 /// proved to be the former panel rule's).
 pub(crate) const STRIP_TOL: f64 = 2.0;
 
+/// The step error aimed at along the strips for `tol` on a contact of
+/// aspect ratio k: STRIP_TOL·tol, times √k below k = 1. J6 divides the
+/// strips' moments ∫Zy·X, ∫Zx·Y by π√k, so their step errors weigh 1/√k
+/// in it: with STRIP_TOL·tol alone, k = 0.114, J = (−0.0367, −0.00261,
+/// −0.0162), D = 0.84, Z0 = 1.47 was off by 1.20·tol at tol 1e-3 and
+/// k = 0.094, J = (1.7e-5, 6.2e-6, −0.127), D = 0.42 (Maxwell) by 1.25·tol
+/// at 1e-2 (J6; small J's, where strips take few steps, each near its
+/// allowed error).
+fn strip_atol(tol: f64, k: f64) -> f64 {
+    STRIP_TOL * tol * k.sqrt().min(1.0)
+}
+
 /// Largest panel depth below the initial panels.
 const MAX_DEPTH: u32 = 12;
 /// First graded panel width from the spin pole's strip, in φ: POLE_GRADING/|J3|.
@@ -134,7 +146,7 @@ fn initial_breaks(p: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
 
 /// Viscoelastic (J4, J5, J6) at the accuracy tol.
 pub(crate) fn solve(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f64) {
-    let atol = STRIP_TOL * tol;
+    let atol = strip_atol(tol, p.k);
     let strip_fn = |y: f64| strip_sums(&VStrip::new(p.strip(y), law), atol);
     let (breaks, nb) = panel_edges(p);
     // Without longitudinal slip (a0 = 0, i.e. J1 = 0) the strip at −Y is
@@ -165,7 +177,7 @@ pub(crate) fn solve_gauss_panels(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f
         (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
         (0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
     ];
-    let atol = STRIP_TOL * tol;
+    let atol = strip_atol(tol, p.k);
     let strip_fn = |y: f64| strip_sums(&VStrip::new(p.strip(y), law), atol);
     let (breaks, nb) = panel_edges(p);
     adaptive_in_phi(&breaks[..nb], &GL4, tol, MAX_DEPTH, (p.k, p.dx), strip_fn)

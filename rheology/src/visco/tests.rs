@@ -491,3 +491,28 @@ fn bench_cases_against_a_tight_tolerance() {
         );
     }
 }
+
+#[test]
+fn small_k_strip_errors_are_weighed_for_the_spin_torque() {
+    // J6 divides the strips' moments by π√k: with the strips' step error at
+    // 2·tol alone these small-k cases were off by 1.20·tol (tol 1e-3) and
+    // 1.25·tol (tol 1e-2) in J6; with it scaled by √k, 0.25 and 0.14.
+    // Against tol 1e-7 (itself within ≈ 1e-7), each within tol/2.
+    let cases = [
+        (0.114, [-0.0367, -0.00261, -0.0162], 0.84, 1.47, 1e-3),
+        (
+            0.0935,
+            [1.711e-5, 6.196e-6, -0.1269],
+            0.415,
+            f64::INFINITY,
+            1e-2,
+        ),
+    ];
+    for (k, j, d, z0, tol) in cases {
+        let p = Scaled::of(&Inputs::new(k, j[0], j[1], j[2]).unwrap());
+        let law = Law::new(z0, d);
+        let e = max_dev(solve(&p, law, tol), solve(&p, law, 1e-7)) / tol;
+        println!("k = {k}, J = {j:?}, D = {d}, Z0 = {z0}: error/tol {e:.3} at tol {tol:e}");
+        assert!(e <= 0.5, "{e}");
+    }
+}
