@@ -369,3 +369,42 @@ fn exponential_steps_match_fine_rk4_on_stiff_strips() {
         }
     }
 }
+
+#[test]
+fn the_pole_strip_unloads_where_the_slip_reverses() {
+    // The spin pole's strip (a = 0 exactly) against its neighbour at
+    // ΔY = 1e-12 (a = −1e-12·J3 ≤ 1e-6, whose sums differ by ≈ 3e-5·|a|):
+    // the stress is lateral and must unload where vy changes sign. The
+    // quasi-steady branch (κ·h large) took the slip's direction there and
+    // flipped the stress instead: at J3 ≥ 5e2 the strip ended plastic,
+    // ∫Zy off by up to 0.29. Every s-step from tol 8e-2 to 1e-5 (plain,
+    // with longer steps on smooth segments, and with exponential steps):
+    // the same flow topology (one unloading, elastic end) and sums within
+    // 1e-5 (the two take different step sequences, the neighbour's slip
+    // turning within |a|/J3 of vy = 0: 2.2e-6 at J3 = 1e5, h = 0.3).
+    for j3 in [1e2, 5e2, 5e3, 1e4, 1e5, 1e6] {
+        let sc = Scaled::new(1.0, 0.5, 1.0, j3, 0.0);
+        let yp = 0.5 / j3;
+        let (pole, next) = (sc.strip(yp), sc.strip(yp + 1e-12));
+        assert_eq!(pole.a, 0.0);
+        for h in [0.3, 0.178, 0.1, 0.0562, 0.0316] {
+            let (p, tp) = pole.integrate_etd(h, 2.0 * h, 0.8 * (h / 0.1).powi(2));
+            let (q, tq) = next.integrate_etd(h, 2.0 * h, 0.8 * (h / 0.1).powi(2));
+            let d = (p.ix - q.ix)
+                .abs()
+                .max((p.iy - q.iy).abs())
+                .max((p.ixy - q.ixy).abs());
+            assert!(
+                d <= 1e-5 && tp == tq,
+                "J3 = {j3}, h = {h}: {p:?} ({tp}) vs {q:?} ({tq})"
+            );
+            let r = pole.integrate(h, h);
+            let s = next.integrate(h, h);
+            let d = (r.ix - s.ix)
+                .abs()
+                .max((r.iy - s.iy).abs())
+                .max((r.ixy - s.ixy).abs());
+            assert!(d <= 1e-5, "J3 = {j3}, h = {h} (RK4): {r:?} vs {s:?}");
+        }
+    }
+}
