@@ -407,7 +407,7 @@ impl Strip {
         // zero, where the stress must unload instead: with it that strip
         // ended plastic, its ∫Zy off by up to 0.29 at |J3| ≥ 5e2 (κ·h large
         // enough for this branch), and the panels next to it were refined
-        // to their last level (37 ms instead of 2 ms at k = 1,
+        // to their last level (37 ms instead of 3 ms at k = 1,
         // J = (0.5, 1, 1e6), tol 1e-3).
         let (nm, n1) = if self.a == 0.0 {
             (n0, n0)
