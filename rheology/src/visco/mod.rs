@@ -109,7 +109,7 @@ pub(crate) const STRIP_TOL: f64 = 2.0;
 /// −0.0162), D = 0.84, Z0 = 1.47 was off by 1.20·tol at tol 1e-3 and
 /// k = 0.094, J = (1.7e-5, 6.2e-6, −0.127), D = 0.42 (Maxwell) by 1.25·tol
 /// at 1e-2 (J6; small J's, where strips take few steps, each near its
-/// allowed error).
+/// allowed error; docs/decisions/0099).
 fn strip_atol(tol: f64, k: f64) -> f64 {
     STRIP_TOL * tol * k.sqrt().min(1.0)
 }
