@@ -135,7 +135,8 @@ const MAX_WARM: usize = 8;
 /// Newton step with the hinted slope, then secant steps; Brent's method as
 /// soon as two evaluations bracket the root. The same acceptance test as the
 /// cold solve ([`G_TOLERANCE`]), so both give the root to that tolerance.
-/// Falls back to [`balance`] when the steps neither converge nor bracket.
+/// Falls back to [`balance`] when the steps neither converge nor bracket,
+/// or when a step cannot be evaluated.
 /// Returns the root and the hint for the next call.
 pub(crate) fn balance_warm(
     g: &mut impl FnMut(f64) -> Result<Torque>,
@@ -151,8 +152,13 @@ pub(crate) fn balance_warm(
         Ok(v)
     };
     let root = match hint {
+        // A warm step the contacts cannot evaluate (the hinted slope belongs
+        // to another operating point: after a load or speed change of many
+        // orders the Newton step can land at contact speeds beyond the
+        // contact's range) is no error of the point: the cold solve,
+        // bracketed from the zero-slip speeds, decides.
         Some(h) if span != 0.0 && span.is_finite() && h.t.is_finite() => {
-            warm(&mut rec, wa, span, h)?
+            warm(&mut rec, wa, span, h).unwrap_or(None)
         }
         _ => None,
     };

@@ -551,6 +551,30 @@ fn warm_started_balance_gives_the_cold_solution() {
 }
 
 #[test]
+fn warm_start_from_a_distant_point_falls_back_to_the_cold_solve() {
+    // The previous root's slope dg/dt scales with the load: after a start-up
+    // at F_a = 1 mN, the Newton step of the warm start at 20 kN and 1e4
+    // rad/s lands at a roller speed whose contact speeds (≈ 2e12 m/s) the
+    // contact rejects. The point is valid and the cold solve finds it: the
+    // warm start's failure must lead to the cold solve, not to an error
+    // about a rolling speed the caller never gave.
+    let v = standard();
+    v.evaluate(&point(&v, 300.0, 0.5, 0.0, 1e-3)).unwrap();
+    let p = point(&v, 1e4, 0.01, 0.0, 20e3);
+    let warm = v.evaluate(&p).unwrap();
+    let cold = standard().evaluate(&p).unwrap();
+    // Same acceptance test |g| ≤ 1e-12 of the torque scale: bound 1e-9
+    // as in warm_started_balance_gives_the_cold_solution.
+    for (name, x, y) in [
+        ("torque_in", warm.torque_in, cold.torque_in),
+        ("torque_out", warm.torque_out, cold.torque_out),
+        ("power_loss", warm.power_loss, cold.power_loss),
+    ] {
+        assert!((x - y).abs() <= 1e-9 * y.abs(), "{name}: warm {x} cold {y}");
+    }
+}
+
+#[test]
 fn thermal_option_off_changes_nothing_and_on_heats_both_contacts() {
     // Santotrac 50 (a report fluid: its film and temperature coefficients
     // come with it), clamped to its data envelope.
