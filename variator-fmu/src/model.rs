@@ -109,7 +109,8 @@ impl Snapshot {
         b
     }
 
-    /// Parses [`Snapshot::to_bytes`]; errors on a wrong size, version or mode.
+    /// Parses [`Snapshot::to_bytes`]; errors on a wrong size, version or
+    /// mode, or a value no instance holds (a NaN, an integer out of range).
     pub fn from_bytes(bytes: &[u8]) -> Result<Self, FmuError> {
         let n = HEADER + 8 * (1 + N_REAL_PARAMS + N_INPUTS + N_REAL_OUTPUTS) + 4 * 5;
         let bad = |why: &str| FmuError::error(format!("fmi2DeSerializeFMUstate: {why}"));
@@ -144,7 +145,7 @@ impl Snapshot {
             a.copy_from_slice(&bytes[s..s + 4]);
             *i = i32::from_le_bytes(a);
         }
-        Ok(Snapshot {
+        let s = Snapshot {
             mode,
             time,
             params,
@@ -157,7 +158,46 @@ impl Snapshot {
             outputs,
             regimes: [ints[3], ints[4]],
             dirty: bytes[3] != 0,
-        })
+        };
+        s.validate()?;
+        Ok(s)
+    }
+
+    /// Checks every value as the setters do (Reals finite, the integers in
+    /// their ranges), the outputs finite and the regimes valid codes: a
+    /// state read from bytes is restored only if `to_bytes` could have
+    /// written it.
+    fn validate(&self) -> Result<(), FmuError> {
+        let bad = |what: String| {
+            FmuError::error(format!(
+                "fmi2DeSerializeFMUstate: {what}: not a state of this FMU"
+            ))
+        };
+        let name = |r: u32| variables::by_vr(r).map_or("?", |v| v.name);
+        if !self.time.is_finite() {
+            return Err(bad(format!("time = {} is not finite", self.time)));
+        }
+        let reals = (1..)
+            .zip(&self.params)
+            .chain((vr::OMEGA_IN..).zip(&self.inputs))
+            .chain((vr::TORQUE_IN..).zip(&self.outputs));
+        for (r, x) in reals {
+            if !x.is_finite() {
+                return Err(bad(format!("{} = {x} is not finite", name(r))));
+            }
+        }
+        for (r, x, lo, hi) in [
+            (vr::ROLLERS, self.rollers, 1, 16),
+            (vr::FLUID, self.fluid, 1, 3),
+            (vr::ENVELOPE, self.envelope, 1, 3),
+            (vr::REGIME_IN, self.regimes[0], 0, 3),
+            (vr::REGIME_OUT, self.regimes[1], 0, 3),
+        ] {
+            if !(lo..=hi).contains(&x) {
+                return Err(bad(format!("{} = {x} is not in [{lo}, {hi}]", name(r))));
+            }
+        }
+        Ok(())
     }
 }
 
@@ -839,5 +879,38 @@ mod tests {
         let b = s.to_bytes();
         assert_eq!(Snapshot::from_bytes(&b).unwrap(), s);
         assert!(Snapshot::from_bytes(&b[1..]).is_err());
+    }
+
+    #[test]
+    fn state_bytes_with_values_no_instance_holds_are_refused() {
+        // A corrupted state (one byte of the eighth output, spin_loss, set
+        // to 0xff made it NaN) was restored and fmi2GetReal returned the
+        // NaN; so were a fluid code 7 and NaN parameters and inputs. Each
+        // is now refused with the variable's name, as the setters refuse it.
+        let mut f = initialized();
+        f.do_step(0.0, 0.5, &mut NullLogger).unwrap();
+        let b = f.get_state().unwrap().to_bytes();
+        let real_at = |i: usize| HEADER + 8 * i;
+        let ints_at = real_at(1 + N_REAL_PARAMS + N_INPUTS + N_REAL_OUTPUTS);
+        let corrupt = |at: usize, bytes: &[u8]| {
+            let mut c = b.clone();
+            c[at..at + bytes.len()].copy_from_slice(bytes);
+            Snapshot::from_bytes(&c)
+        };
+        let nan = f64::NAN.to_le_bytes();
+        for (at, what) in [
+            (real_at(0), "time"),
+            (real_at(1), "cavity_radius"),
+            (real_at(1 + N_REAL_PARAMS), "omega_in"),
+            (real_at(1 + N_REAL_PARAMS + N_INPUTS + 7), "spin_loss"),
+        ] {
+            let e = corrupt(at, &nan).unwrap_err();
+            assert!(e.message.contains(what), "{e}");
+        }
+        for (k, code) in [(0, 0), (0, 17), (1, 7), (2, -1), (3, 4), (4, -1)] {
+            assert!(corrupt(ints_at + 4 * k, &i32::to_le_bytes(code)).is_err());
+        }
+        // The bytes as written are still accepted.
+        assert!(Snapshot::from_bytes(&b).is_ok());
     }
 }
