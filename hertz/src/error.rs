@@ -56,4 +56,20 @@ pub enum HertzError {
         /// Largest supported k.
         k_max: f64,
     },
+    /// The inputs are each in range, but together give a contact outside
+    /// the floating-point range (a semi-axis, the pressure or the load
+    /// overflows to infinity or underflows to zero: e.g. a load of 1e308 N,
+    /// a modulus of 1e-320 Pa or radii of 1e300 m).
+    #[error(
+        "{quantity} = {value} is not a finite positive number: the radii, moduli and {given} \
+         are outside the floating-point range of the contact"
+    )]
+    OutOfFloatRange {
+        /// The result that overflowed or underflowed, with its unit.
+        quantity: &'static str,
+        /// Its value (0 or infinite).
+        value: f64,
+        /// The load or pressure given.
+        given: &'static str,
+    },
 }

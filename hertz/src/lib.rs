@@ -522,7 +522,7 @@ impl Geometry {
         // Equation (1).
         let p0 = (3.0 * load * g.e_prime * g.e_prime / (g.re * g.re)).cbrt()
             / (2.0 * PI * g.shape_a * g.shape_b);
-        Ok(self.finish(a, p0, load))
+        self.finish(a, p0, load, "load")
     }
 
     /// The contact at maximum (Hertz) pressure `P0` (Pa) — the inverse
@@ -534,13 +534,21 @@ impl Geometry {
         P0_RANGE.check("p0 (maximum Hertz pressure, Pa)", p0)?;
         let a = self.c * p0; // equation (2)
         let load = 2.0 / 3.0 * PI * a * (self.k * a) * p0;
-        Ok(self.finish(a, p0, load))
+        self.finish(a, p0, load, "p0")
     }
 
-    fn finish(&self, a: f64, p0: f64, load: f64) -> Contact {
+    /// The contact from a, P0 and F; errors if a result is 0 or infinite
+    /// (`given`: the input, load or P0, named in the message).
+    fn finish(
+        &self,
+        a: f64,
+        p0: f64,
+        load: f64,
+        given: &'static str,
+    ) -> Result<Contact, HertzError> {
         let b = self.k * a;
         let minor = a.min(b);
-        Contact {
+        let c = Contact {
             geometry: *self,
             a,
             b,
@@ -549,7 +557,24 @@ impl Geometry {
             area: PI * a * b,
             load,
             approach: 2.0 * p0 * minor * self.elliptic_k / self.e_prime,
+        };
+        for (quantity, value) in [
+            ("semi-axis a (m)", c.a),
+            ("semi-axis b (m)", c.b),
+            ("maximum pressure p0 (Pa)", c.p0),
+            ("load (N)", c.load),
+            ("contact area (m²)", c.area),
+            ("approach (m)", c.approach),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(HertzError::OutOfFloatRange {
+                    quantity,
+                    value,
+                    given,
+                });
+            }
         }
+        Ok(c)
     }
 }
 

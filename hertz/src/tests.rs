@@ -286,3 +286,45 @@ fn hamrock_brewe_error_is_as_documented() {
     // And it is a real approximation, not the exact path by accident.
     assert!(worst[0] > 0.01, "{worst:?}");
 }
+
+#[test]
+fn inputs_in_range_whose_contact_leaves_the_float_range_are_refused() {
+    // Each input is finite and positive, so each passes its range, but the
+    // contact was returned with a = b = inf or p0 = 0 or inf (`traction
+    // hertz` printed inf; the contact crate failed later with "J3 = NaN").
+    let steel = |rx, ry| Body::steel(rx, ry);
+    let soft = Body::new(0.03, 0.03, 1e-320, 0.3);
+    let cases: [(Body, Body, Option<f64>, Option<f64>); 6] = [
+        (soft, steel(0.07, INF), Some(500.0), None),
+        (soft, steel(0.07, INF), None, Some(1.5e9)),
+        (steel(0.03, 0.03), steel(0.07, INF), None, Some(1e308)),
+        (
+            steel(1e-300, 1e-300),
+            steel(1e-300, 1e-300),
+            Some(1e-300),
+            None,
+        ),
+        (steel(1e300, 1e300), steel(1e300, 1e300), Some(500.0), None),
+        (
+            Body::new(0.03, 0.03, 1e-100, 0.3),
+            Body::new(0.07, INF, 1e-100, 0.3),
+            Some(1e300),
+            None,
+        ),
+    ];
+    for (b1, b2, load, p0) in cases {
+        let r = match (load, p0) {
+            (Some(f), _) => solve_load(&b1, &b2, f),
+            (_, Some(p)) => solve_p0(&b1, &b2, p),
+            _ => unreachable!(),
+        };
+        assert!(
+            matches!(r, Err(HertzError::OutOfFloatRange { .. })),
+            "{b1:?} {b2:?} {load:?} {p0:?}: {r:?}"
+        );
+    }
+    // The extremes of ordinary use stay valid: 1 µN on a 1 mm steel ball
+    // and 1 GN on a 1 m roller.
+    assert!(solve_load(&steel(1e-3, 1e-3), &steel(INF, INF), 1e-6).is_ok());
+    assert!(solve_load(&steel(1.0, 1.0), &steel(INF, INF), 1e9).is_ok());
+}
