@@ -102,6 +102,46 @@ pub enum ComplianceError {
         /// The bracket of (B7).
         denominator: f64,
     },
+    /// The inputs are each in range, but together overflow (or underflow)
+    /// the formula: a result or the term named is infinite, NaN or, for a
+    /// slope or modulus, zero (e.g. P0 = 5e-324 Pa, or m = 1e300).
+    #[error(
+        "{quantity} = {value} is not a finite{positive} number: the inputs are outside the floating-point range of the formula"
+    )]
+    OutOfFloatRange {
+        /// The result or intermediate term, with its formula number.
+        quantity: &'static str,
+        /// Its value.
+        value: f64,
+        /// " positive" where the quantity must be > 0, else "".
+        positive: &'static str,
+    },
+}
+
+/// `x` if finite, else [`ComplianceError::OutOfFloatRange`] naming `quantity`.
+fn finite(quantity: &'static str, x: f64) -> Result<f64> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(ComplianceError::OutOfFloatRange {
+            quantity,
+            value: x,
+            positive: "",
+        })
+    }
+}
+
+/// `x` if finite and > 0, else [`ComplianceError::OutOfFloatRange`] naming `quantity`.
+fn positive(quantity: &'static str, x: f64) -> Result<f64> {
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else {
+        Err(ComplianceError::OutOfFloatRange {
+            quantity,
+            value: x,
+            positive: " positive",
+        })
+    }
 }
 
 /// Result alias of this crate.
@@ -170,7 +210,7 @@ pub fn dry_creep(q: f64, force: f64, a: f64, b: f64, shear_modulus: f64) -> Resu
     Range::POSITIVE.check("semi-axis a", a)?;
     Range::POSITIVE.check("semi-axis b", b)?;
     Range::POSITIVE.check("disc shear modulus G_s", shear_modulus)?;
-    Ok(q * force / (PI * a * b * shear_modulus))
+    finite("dry creep (A1)", q * force / (PI * a * b * shear_modulus))
 }
 
 /// (A2) creep of an elastic film of thickness `h` and mean modulus `g_bar`:
@@ -181,7 +221,10 @@ pub fn film_creep(h: f64, force: f64, a: f64, b: f64, g_bar: f64) -> Result<f64>
     Range::POSITIVE.check("semi-axis a", a)?;
     Range::POSITIVE.check("semi-axis b", b)?;
     Range::POSITIVE.check("fluid shear modulus Ḡ", g_bar)?;
-    Ok(32.0 / (9.0 * PI) * (h / a) * force / (PI * a * b * g_bar))
+    finite(
+        "film creep (A2)",
+        32.0 / (9.0 * PI) * (h / a) * force / (PI * a * b * g_bar),
+    )
 }
 
 /// (A3) total creep of the disc–film–disc sandwich: (A1) + (A2).
@@ -194,7 +237,10 @@ pub fn total_creep(
     a: f64,
     b: f64,
 ) -> Result<f64> {
-    Ok(dry_creep(q, force, a, b, shear_modulus)? + film_creep(h, force, a, b, g_bar)?)
+    finite(
+        "total creep (A3)",
+        dry_creep(q, force, a, b, shear_modulus)? + film_creep(h, force, a, b, g_bar)?,
+    )
 }
 
 /// (B1) compliance-corrected modulus `G_c = Ḡ (1 − m/m')⁻¹`; requires `m < m'`.
@@ -205,7 +251,7 @@ pub fn compliance_corrected_modulus(g_bar: f64, m: f64, m_dry: f64) -> Result<f6
     if m >= m_dry {
         return Err(ComplianceError::SlopeNotBelowDry { m, m_dry });
     }
-    Ok(g_bar / (1.0 - m / m_dry))
+    positive("corrected modulus G_c (B1)", g_bar / (1.0 - m / m_dry))
 }
 
 /// (B2) dry slope `m' = π a b G_s/(q N)` for normal load `n` (N).
@@ -215,7 +261,7 @@ pub fn dry_slope_from_load(a: f64, b: f64, shear_modulus: f64, q: f64, n: f64) -
     Range::POSITIVE.check("disc shear modulus G_s", shear_modulus)?;
     Range::POSITIVE.check("Kalker constant q", q)?;
     Range::POSITIVE.check("normal load N", n)?;
-    Ok(PI * a * b * shear_modulus / (q * n))
+    positive("dry slope m' (B2)", PI * a * b * shear_modulus / (q * n))
 }
 
 /// (B3) dry slope `m' = 3 G_s/(2 q P0)`.
@@ -223,7 +269,7 @@ pub fn dry_slope(shear_modulus: f64, q: f64, p0: f64) -> Result<f64> {
     Range::POSITIVE.check("disc shear modulus G_s", shear_modulus)?;
     Range::POSITIVE.check("Kalker constant q", q)?;
     Range::POSITIVE.check("Hertz pressure P0", p0)?;
-    Ok(1.5 * shear_modulus / (q * p0))
+    positive("dry slope m' (B3)", 1.5 * shear_modulus / (q * p0))
 }
 
 /// (B4) apparent fluid modulus `Ḡ = (π/4) m P0 h/a` (Pa).
@@ -232,7 +278,7 @@ pub fn apparent_modulus(m: f64, p0: f64, h: f64, a: f64) -> Result<f64> {
     Range::POSITIVE.check("Hertz pressure P0", p0)?;
     Range::POSITIVE.check("film thickness h", h)?;
     Range::POSITIVE.check("semi-axis a", a)?;
-    Ok(PI / 4.0 * m * p0 * h / a)
+    positive("apparent modulus Ḡ (B4)", PI / 4.0 * m * p0 * h / a)
 }
 
 /// One measured contact for (B7): slope, Kalker q, semi-axis a and film thickness h.
@@ -270,13 +316,17 @@ pub fn convert_slope(
     Range::POSITIVE.check("disc shear modulus G_s", g_s)?;
     let (m, q, a, h) = (measured.slope, measured.q, measured.a, measured.h);
     let (qs, as_, hs) = (target.q, target.a, target.h);
-    let bracket = 1.0 + 2.0 / 3.0 * (m * q * p0 / g_s) * (as_ * h * qs / (a * q * hs) - 1.0);
+    let load_term = finite("m q P0/G_s of (B7)", m * q * p0 / g_s)?;
+    let bracket = 1.0 + 2.0 / 3.0 * load_term * (as_ * h * qs / (a * q * hs) - 1.0);
     if bracket <= 0.0 {
         return Err(ComplianceError::SingularConversion {
             denominator: bracket,
         });
     }
-    Ok(m * (h * as_) / (hs * a) / bracket)
+    positive(
+        "converted slope m* (B7)",
+        m * (h * as_) / (hs * a) / bracket,
+    )
 }
 
 /// Convert a slope measured in direction `from` to direction `to` at the same
@@ -305,6 +355,36 @@ pub fn convert_slope_same_contact(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn inputs_in_range_that_overflow_a_formula_are_refused() {
+        // Each input passes its range, but the result was NaN or infinite:
+        // m = 1e300 converted to its own direction gave NaN (inf · 0 in the
+        // bracket of B7; the answer would be m itself), P0 = 5e-324 Pa a dry
+        // slope of inf, m = 1e300 against another direction a slope of 0.
+        let steel = DiscMaterial::REPORT_STEEL;
+        let side = Direction::Side;
+        let long = Direction::Longitudinal;
+        let refused = |r: Result<f64>| matches!(r, Err(ComplianceError::OutOfFloatRange { .. }));
+        assert!(refused(convert_slope_same_contact(
+            1e300, 2.0, 1.5e9, side, side, steel
+        )));
+        assert!(refused(convert_slope_same_contact(
+            1e300, 2.0, 1.5e9, long, side, steel
+        )));
+        let gs = steel.shear_modulus().unwrap();
+        assert!(refused(dry_slope(gs, 1.0, 5e-324)));
+        assert!(refused(dry_slope_from_load(1e-200, 1e-200, gs, 1.0, 1.0)));
+        assert!(refused(apparent_modulus(1e300, 1e300, 1.0, 1.0)));
+        assert!(refused(dry_creep(1.0, 1e300, 1e-200, 1e-200, gs)));
+        // Ordinary inputs are unchanged: the report's Table 4-3 operation.
+        let m = convert_slope_same_contact(40.0, 2.0, 1.5e9, long, side, steel).unwrap();
+        assert!(m.is_finite() && m > 0.0);
+        assert_eq!(
+            convert_slope_same_contact(40.0, 2.0, 1.5e9, side, side, steel).unwrap(),
+            40.0
+        );
+    }
 
     #[test]
     fn b3_is_b2_with_hertz_load() {
