@@ -437,7 +437,7 @@ pub fn contact_kinematics(
     let v1 = body1.velocity_at(&frame.point);
     let v2 = body2.velocity_at(&frame.point);
     let dv = v1 - v2;
-    Ok(ContactKinematics {
+    let k = ContactKinematics {
         surface_velocity_1: v1,
         surface_velocity_2: v2,
         rolling_speed: 0.5 * (v1 + v2).dot(&frame.rolling),
@@ -446,12 +446,57 @@ pub fn contact_kinematics(
         approach: dv.dot(&frame.normal),
         spin: (body1.angular_velocity - body2.angular_velocity).dot(&frame.normal),
         frame,
-    })
+    };
+    // Finite inputs can still overflow: ω × (p − c) with |p − c| ≈ 1e308.
+    let outputs = [
+        (
+            "surface velocity of body 1 (m/s)",
+            k.surface_velocity_1.norm(),
+        ),
+        (
+            "surface velocity of body 2 (m/s)",
+            k.surface_velocity_2.norm(),
+        ),
+        ("rolling speed U (m/s)", k.rolling_speed),
+        ("slip ΔU (m/s)", k.slip),
+        ("side slip ΔV (m/s)", k.side_slip),
+        ("approach speed (m/s)", k.approach),
+        ("spin ω (rad/s)", k.spin),
+    ];
+    for (quantity, value) in outputs {
+        if !value.is_finite() {
+            return Err(KinematicsError::OutOfRange {
+                quantity,
+                value,
+                range: "must be finite: the angular velocities, axis points and contact point \
+                        are outside the floating-point range",
+            });
+        }
+    }
+    Ok(k)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn finite_inputs_whose_velocities_overflow_are_refused() {
+        // An axis point at 1e308 m (finite, so accepted) made ω × (c − p)
+        // overflow: `traction kinematics` printed inf and NaN slips.
+        let spin = BodyMotion::rotating(Vector3::new(60.0, -6.0, -20.0), Vector3::zeros());
+        let far = BodyMotion::rotating(Vector3::z(), Vector3::new(-1e308, 60.0, 63.0));
+        let r = contact_kinematics(&spin, &far, Vector3::y(), Vector3::z(), Vector3::x());
+        assert!(
+            matches!(r, Err(KinematicsError::OutOfRange { .. })),
+            "{r:?}"
+        );
+        let e = r.unwrap_err().to_string();
+        assert!(e.contains("surface velocity of body 2"), "{e}");
+        // The same bodies with the axis at 1 m are fine.
+        let near = BodyMotion::rotating(Vector3::z(), Vector3::new(-1.0, 60.0, 63.0));
+        assert!(contact_kinematics(&spin, &near, Vector3::y(), Vector3::z(), Vector3::x()).is_ok());
+    }
 
     #[test]
     fn eq6_hand_check_low_speed_k1() {
