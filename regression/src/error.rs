@@ -105,4 +105,18 @@ pub enum RegressionError {
         /// The estimate.
         estimate: f64,
     },
+    /// The report's percent error 50·(a/e − e/a) of a data point overflows:
+    /// the actual value and the estimate, both positive, differ by a factor
+    /// beyond the floating-point range (e.g. a target of 1e-320).
+    #[error(
+        "percent error at data point {index} is not finite: actual {actual} and estimate {estimate} differ beyond the floating-point range"
+    )]
+    PercentErrorOverflow {
+        /// Zero-based row index.
+        index: usize,
+        /// The actual (fitted) value.
+        actual: f64,
+        /// The estimate.
+        estimate: f64,
+    },
 }

@@ -314,7 +314,15 @@ pub fn fit(
                 estimate: e,
             });
         }
-        percent_errors.push(percent_error(a, e));
+        let pe = percent_error(a, e);
+        if !pe.is_finite() {
+            return Err(RegressionError::PercentErrorOverflow {
+                index: i,
+                actual: a,
+                estimate: e,
+            });
+        }
+        percent_errors.push(pe);
     }
     let residual_sum_of_squares = targets
         .iter()
@@ -344,7 +352,8 @@ pub struct LeaveOneOut {
     pub max_abs_percent: f64,
     /// Root-mean-square of the held-out residuals a − ê (units of the target).
     pub rms_residual: f64,
-    /// Number of held-out predictions that were not positive.
+    /// Number of held-out predictions that were not positive (or whose
+    /// percent error overflows); their `percent_errors` entry is `None`.
     pub non_positive: usize,
 }
 
@@ -377,8 +386,8 @@ pub fn leave_one_out(
         let e = f.raw(&Normalised::new(&points[i], &f.means()));
         let a = targets[i];
         sq += (a - e).powi(2);
-        if e > 0.0 && e.is_finite() {
-            let pe = percent_error(a, e);
+        let pe = percent_error(a, e);
+        if e > 0.0 && e.is_finite() && pe.is_finite() {
             sq_pct += pe * pe;
             n_pct += 1;
             max_abs = max_abs.max(pe.abs());
@@ -410,7 +419,10 @@ fn fit_lenient(
 ) -> Result<Correlation, RegressionError> {
     match fit(model, points, targets, None) {
         Ok(f) => Ok(f.correlation),
-        Err(RegressionError::NonPositiveEstimate { .. }) => {
+        Err(
+            RegressionError::NonPositiveEstimate { .. }
+            | RegressionError::PercentErrorOverflow { .. },
+        ) => {
             // Refit without the estimate check: same algebra.
             let mut means = Variables::mean_of(points)?;
             if model.len() == 16 {
@@ -500,6 +512,28 @@ mod tests {
             }
             assert!(f.stats.std_dev < 1e-8);
         }
+    }
+
+    #[test]
+    fn a_percent_error_beyond_the_float_range_is_an_error() {
+        // A target of 1e-320 is positive, so it was accepted, and
+        // 50·(a/e − e/a) overflowed: `traction fit` printed a mean error of
+        // -inf % and a standard deviation of NaN %.
+        let pts = grid(false);
+        let mut y: Vec<f64> = (0..pts.len())
+            .map(|i| 0.05 + 1e-3 * (i % 7) as f64)
+            .collect();
+        y[3] = 1e-320;
+        let e = fit(Model::EQ14, &pts, &y, None).unwrap_err();
+        assert!(
+            matches!(e, RegressionError::PercentErrorOverflow { index: 3, .. }),
+            "{e}"
+        );
+        // Cross-validation counts the point as undefined instead.
+        let l = leave_one_out(Model::EQ14, &pts, &y).unwrap();
+        assert!(l.rms_percent.is_finite() && l.percent_errors[3].is_none());
+        y[3] = 0.05;
+        assert!(fit(Model::EQ14, &pts, &y, None).is_ok());
     }
 
     #[test]
