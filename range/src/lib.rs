@@ -213,7 +213,7 @@ impl fmt::Display for Range {
 
 /// A value outside the range of its quantity.
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
-#[error("{quantity} = {value} is out of range: must be {range}")]
+#[error("{quantity} = {} is out of range: must be {range}", Num(*.value))]
 pub struct OutOfRange {
     /// Which quantity, with its unit where it has one (e.g.
     /// `e1 (Young's modulus of body 1, Pa)`).
@@ -245,6 +245,23 @@ mod tests {
             assert!(!r.contains(f64::NAN));
         }
         assert!(Range::FINITE.contains(-1e300) && !Range::FINITE.contains(f64::NEG_INFINITY));
+    }
+
+    #[test]
+    fn values_print_short_in_messages() {
+        // The value as the range's ends: plain for 1e-3 ≤ |v| < 1e5, else
+        // in exponent form (an f64 near its maximum printed 309 digits).
+        let r = Range::closed(-1e100, 1e100);
+        let e = |v: f64| r.check("J3", v).unwrap_err().to_string();
+        assert_eq!(
+            e(1.7e308),
+            "J3 = 1.7e308 is out of range: must be in [-1e100, 1e100]"
+        );
+        assert!(e(f64::NAN).starts_with("J3 = NaN is out of range"));
+        let p = |v: f64| Range::POSITIVE.check("x", v).unwrap_err().to_string();
+        assert!(p(-2.5).starts_with("x = -2.5 is"), "{}", p(-2.5));
+        assert!(p(-5e-324).starts_with("x = -5e-324 is"), "{}", p(-5e-324));
+        assert!(p(0.0).starts_with("x = 0 is"), "{}", p(0.0));
     }
 
     #[test]

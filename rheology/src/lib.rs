@@ -181,6 +181,18 @@ pub const REFERENCE_STRESS_RANGE: Range = Range::POSITIVE.with_infinity();
 /// Above this max(|J1|, |J2|, |J3|) the elastic lag is below 1e-12 of the
 /// traction and the elastic/plastic model returns the rigid/plastic solution.
 pub const J_RIGID: f64 = 1e12;
+/// Largest |J1|, |J2|, |J3| and |ΔX| accepted. Far beyond any physical state
+/// (a contact standing still with slip or spin has J's of 1e5–1e12, set by
+/// its rolling-speed floor; the extremes of traction-contact's input ranges
+/// stay below 1e32; from [`J_RIGID`] on the result is the rigid/plastic
+/// limit), and small enough
+/// that J7 = J1·J4 + J2·J5 + J3·J6 and the rigid/plastic solver's rescaling
+/// stay within the floating-point range (at |J3| = 1.7e308 J7 overflowed to
+/// infinity, and at |J1| = 1.8e308 the rescaling underflowed to a subnormal,
+/// J4 = 1 + 8.5e-9).
+pub const J_MAX: f64 = 1e100;
+/// Valid J1, J2, J3 and ΔX: [−[`J_MAX`], [`J_MAX`]].
+pub const J_RANGE: Range = Range::closed(-J_MAX, J_MAX);
 
 /// Errors of this crate; every variant names the quantity and its valid range.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -188,7 +200,7 @@ pub const J_RIGID: f64 = 1e12;
 pub enum RheologyError {
     /// An input is NaN, infinite or outside its valid range (the message
     /// names the quantity, the value and the range): k
-    /// ([`ASPECT_RATIO_RANGE`]), J1, J2, J3, ΔX (finite), gy
+    /// ([`ASPECT_RATIO_RANGE`]), J1, J2, J3, ΔX ([`J_RANGE`]), gy
     /// ([`STIFFNESS_RATIO_RANGE`]), the accuracy ([`TOLERANCE_RANGE`],
     /// [`map::TOLERANCE_RANGE`]), D ([`DEBORAH_RANGE`]), Z0
     /// ([`REFERENCE_STRESS_RANGE`]).
@@ -256,7 +268,8 @@ impl Inputs {
         Ok(inp)
     }
 
-    /// Check k and finiteness (the fields are public, so [`evaluate`] checks again).
+    /// Check k, the J's and ΔX ([`J_RANGE`]) and gy (the fields are public,
+    /// so [`evaluate`] checks again).
     pub fn validate(&self) -> Result<(), RheologyError> {
         ASPECT_RATIO_RANGE.check("aspect ratio k", self.k)?;
         for (name, value) in [
@@ -265,7 +278,7 @@ impl Inputs {
             ("J3", self.j3),
             ("dX", self.dx),
         ] {
-            Range::FINITE.check(name, value)?;
+            J_RANGE.check(name, value)?;
         }
         STIFFNESS_RATIO_RANGE.check("stiffness ratio gy = Gy/Gx", self.gy)?;
         Ok(())

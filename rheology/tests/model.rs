@@ -180,7 +180,7 @@ fn large_j_tends_to_rigid_plastic() {
 
 #[test]
 fn huge_inputs_are_finite_and_rigid() {
-    for &m in &[1e6, 1e9, 1e13, 1e200] {
+    for &m in &[1e6, 1e9, 1e13, 1e99] {
         for model in [
             Model::ElasticPlastic,
             Model::RigidPlastic,
@@ -699,5 +699,46 @@ fn wide_range_scan_elastic_plastic() {
 fn wide_range_scan_viscoelastic() {
     for seed in 2..=4 {
         assert!(wide_range_scan(true, seed, 2000).iter().all(|&e| e <= 1.0));
+    }
+}
+
+#[test]
+fn j_beyond_their_range_are_refused_and_the_largest_stay_finite() {
+    // |J| ≤ J_MAX = 1e100: at |J3| = 1.7e308 (k = 0.1) J7 overflowed to
+    // infinity, and at |J1| = 1.8e308 the rigid/plastic rescaling underflowed
+    // (J4 = 1 + 8.5e-9). Beyond the range: an error naming the quantity; at
+    // its end every model's outputs finite, |(J4, J5)| ≤ 1 + tol.
+    use traction_rheology::{J_MAX, J_RANGE};
+    assert_eq!(J_RANGE.max(), J_MAX);
+    for (j, name) in [
+        ([1.1e100, 0.0, 0.0], "J1"),
+        ([0.0, -1.7e308, 0.0], "J2"),
+        ([0.0, 0.0, 1e101], "J3"),
+    ] {
+        let e = Inputs::new(0.1, j[0], j[1], j[2]).unwrap_err();
+        assert!(e.to_string().contains(name), "{e}");
+    }
+    assert!(Inputs::with_offset(1.0, 1.0, 0.0, 1.0, 2e100).is_err());
+    for j in [
+        [0.0, 0.0, J_MAX],
+        [-J_MAX, 0.0, 0.0],
+        [J_MAX, -J_MAX, J_MAX],
+    ] {
+        let i = inp(0.1, j[0], j[1], j[2]);
+        for model in [
+            Model::ElasticPlastic,
+            Model::RigidPlastic,
+            Model::Viscoelastic {
+                deborah: 1.0,
+                z0: 1.0,
+            },
+        ] {
+            let o = evaluate(&i, model, Accuracy::new(1e-2).unwrap()).unwrap();
+            assert!(
+                o.j4.is_finite() && o.j5.is_finite() && o.j6.is_finite() && o.j7.is_finite(),
+                "{j:?} {model:?}: {o:?}"
+            );
+            assert!(o.j4.hypot(o.j5) <= 1.0 + 1e-2, "{j:?} {model:?}: {o:?}");
+        }
     }
 }

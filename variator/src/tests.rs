@@ -391,7 +391,7 @@ fn bad_input_names_the_quantity() {
     // Range-checked inputs state the quantity, the value and the whole range.
     assert_eq!(
         err(OperatingPoint::new(1.0, 2e5, 0.0, 1.0, 70.0).map(|_| ())),
-        "output-disc speed ω_out = 200000 is out of range: must be in [-1e5, 1e5] rad/s"
+        "output-disc speed ω_out = 2e5 is out of range: must be in [-1e5, 1e5] rad/s"
     );
     assert_eq!(
         err(Cavity::half_toroidal(R0, 1.625 * R0, 1.7, R22, 2).map(|_| ())),
