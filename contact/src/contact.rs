@@ -414,9 +414,20 @@ impl TractionContact {
                     physical_film,
                     (inlet.m, inlet.mu),
                 )?;
+                // m and μ at the rise dt; a temperature law that leaves the
+                // float range there (μ = ∞ at β_μ = −0.5/K near 2000 K) is
+                // an error, not NaN forces.
                 let props = |dt: f64| {
                     let (fm, fmu) = model.factors(dt);
-                    (inlet.m * fm, inlet.mu * fmu)
+                    let (m, mu) = (inlet.m * fm, inlet.mu * fmu);
+                    if m.is_finite() && m > 0.0 && mu.is_finite() && mu > 0.0 {
+                        Ok((m, mu))
+                    } else {
+                        Err(ContactError::Thermal {
+                            reason: "the temperature law of m or μ leaves the float range at this rise",
+                            temperature_rise: dt,
+                        })
+                    }
                 };
                 // With spin, the first evaluation (far from the root) at a
                 // ten times coarser accuracy, the others at the contact's;
@@ -432,7 +443,7 @@ impl TractionContact {
                 let mut last = None;
                 let mut count = 0;
                 let (dt, _) = thermal::solve_fixed_point_with_slope(model.start(), |dt| {
-                    let (m, mu) = props(dt);
+                    let (m, mu) = props(dt)?;
                     count += 1;
                     let acc = if count <= 1 {
                         coarse
@@ -453,7 +464,7 @@ impl TractionContact {
                 match last {
                     Some((t, true, s, p)) if t == dt => (s, p, dt),
                     _ => {
-                        let (m, mu) = props(dt);
+                        let (m, mu) = props(dt)?;
                         let (s, p) = at(m, mu, mu)?;
                         (s, p, dt)
                     }

@@ -469,3 +469,46 @@ fn inlet_heated_film_bad_input() {
         "{e}"
     );
 }
+
+#[test]
+fn a_temperature_law_outside_the_float_range_is_a_thermal_error() {
+    // μ(ΔT) = μ·e^(−β_μ(ΔT − ΔT_peak) − …) with β_μ = −0.5/K: the heating
+    // runs away, and on its way to the largest accepted rise (2000 K) the
+    // factor reaches e^1000, beyond the float range: that gave μ = ∞ and NaN
+    // forces (reported as an internal error); now a thermal error at that
+    // rise. Where the fixed point stays low, the same law is solved.
+    let c = contact(
+        Fluid::constant(40.0, 0.06).unwrap(),
+        Some(user_thermal(-0.5)),
+    );
+    let e = c.evaluate(&state(20.0, 2.0, 0.0, 0.0)).unwrap_err();
+    let msg = traction_contact::error_chain(&e);
+    assert!(matches!(e, ContactError::Thermal { .. }), "{msg}");
+    assert!(msg.contains("temperature law of m or μ"), "{msg}");
+    let ok = c.evaluate(&state(20.0, 0.05, 0.0, 0.0)).unwrap();
+    assert!(
+        ok.temperature_rise > 0.0 && ok.temperature_rise < 10.0,
+        "{ok:?}"
+    );
+
+    // A fluid's μ measured at a traction peak that would heat the film by
+    // 3.5e7 K (U = 2.5e5 m/s on a 0.1 N, 28 µm contact) has no unheated μ
+    // (the factor back to it overflowed): a thermal error naming the peak.
+    let b1 = Body::new(2.037e-2, -5.47e-3, 3.0e11, 0.3725);
+    let b2 = Body::new(5.47e-3, 6.889e-4, 3.1e10, 0.2084);
+    let c = TractionContact::new(
+        &b1,
+        &b2,
+        Fluid::santotrac_50(EnvelopeRule::Clamp).unwrap(),
+        Options {
+            thermal: Some(Thermal::default()),
+            ..Options::default()
+        },
+    )
+    .unwrap();
+    let st = OperatingState::new(0.0989, -2.544e5, 5.088e5, 0.0, -2.905e6, -29.2).unwrap();
+    let e = c.evaluate(&st).unwrap_err();
+    let msg = traction_contact::error_chain(&e);
+    assert!(matches!(e, ContactError::Thermal { .. }), "{msg}");
+    assert!(msg.contains("traction peak"), "{msg}");
+}

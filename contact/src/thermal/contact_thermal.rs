@@ -22,6 +22,7 @@ use traction_fluids::ThermalProperties;
 
 use super::Thermal;
 use super::film::film;
+use super::fixed_point::MAX_TEMPERATURE_RISE;
 use super::flash::surfaces_resistance;
 use crate::{ContactError, Fluid, OperatingState, TractionContact};
 
@@ -97,6 +98,17 @@ impl ContactThermal {
         } else {
             0.0
         };
+        // The given μ is that of a traction peak heated by `reference_rise`;
+        // beyond the largest rise the fixed point accepts, that reference is
+        // outside the model (the factor back to the unheated μ overflowed:
+        // 3.5e7 K at U = 2.5e5 m/s on a 0.1 N contact gave μ = ∞ and NaN
+        // forces).
+        if !(reference_rise <= MAX_TEMPERATURE_RISE) {
+            return Err(ContactError::Thermal {
+                reason: "the traction peak the fluid's μ refers to heats the film beyond the largest accepted rise (2000 K)",
+                temperature_rise: reference_rise,
+            });
+        }
         Ok(ContactThermal {
             beta_mu,
             beta_m,
