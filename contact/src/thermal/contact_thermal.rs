@@ -103,7 +103,7 @@ impl ContactThermal {
         // outside the model (the factor back to the unheated μ overflowed:
         // 3.5e7 K at U = 2.5e5 m/s on a 0.1 N contact gave μ = ∞ and NaN
         // forces).
-        if !(reference_rise <= MAX_TEMPERATURE_RISE) {
+        if reference_rise.is_nan() || reference_rise > MAX_TEMPERATURE_RISE {
             return Err(ContactError::Thermal {
                 reason: "the traction peak the fluid's μ refers to heats the film beyond the largest accepted rise (2000 K)",
                 temperature_rise: reference_rise,
