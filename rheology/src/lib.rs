@@ -186,10 +186,8 @@ pub const J_RIGID: f64 = 1e12;
 /// its rolling-speed floor; the extremes of traction-contact's input ranges
 /// stay below 1e32; from [`J_RIGID`] on the result is the rigid/plastic
 /// limit), and small enough
-/// that J7 = J1·J4 + J2·J5 + J3·J6 and the rigid/plastic solver's rescaling
-/// stay within the floating-point range (at |J3| = 1.7e308 J7 overflowed to
-/// infinity, and at |J1| = 1.8e308 the rescaling underflowed to a subnormal,
-/// J4 = 1 + 8.5e-9).
+/// that J7 = J1·J4 + J2·J5 + J3·J6 stays within the floating-point range
+/// (at |J3| = 1.7e308 and k = 0.1 it overflowed to infinity).
 pub const J_MAX: f64 = 1e100;
 /// Valid J1, J2, J3 and ΔX: [−[`J_MAX`], [`J_MAX`]].
 pub const J_RANGE: Range = Range::closed(-J_MAX, J_MAX);
