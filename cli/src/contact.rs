@@ -316,6 +316,37 @@ fn solve_row(
     let mut opts = *opts;
     if let Some(th) = opts.thermal.as_mut() {
         thermal_columns(table, row, th)?;
+        // A fluid given by m and mu has no thermal properties of its own:
+        // name the columns that supply them (the contact would name its API).
+        if !matches!(fluid, Fluid::Report { .. }) {
+            let missing = if th.mu_coefficient.is_none() {
+                Some((
+                    "mu_temperature_coefficient",
+                    "β_μ = −d ln μ/dθ, 1/K, in [-1, 1]",
+                ))
+            } else if th.fluid_conductivity.is_none() {
+                Some((
+                    "fluid_conductivity",
+                    "the film's thermal conductivity, W/(m·K)",
+                ))
+            } else if matches!(fluid, Fluid::Constant { .. }) && th.film == Film::FromFluid {
+                Some((
+                    "film_thickness",
+                    "m, or both `viscosity` and `pressure_viscosity`",
+                ))
+            } else {
+                None
+            };
+            if let Some((column, what)) = missing {
+                return Err(table.cell_error(
+                    row,
+                    column,
+                    format!(
+                        "--thermal with a fluid given by `m` and `mu` needs `{column}` ({what})"
+                    ),
+                ));
+            }
+        }
     }
     let contact =
         TractionContact::new(&body1, &body2, fluid, opts).map_err(|e| table.row_error(row, e))?;

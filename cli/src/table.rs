@@ -75,6 +75,14 @@ impl Table {
             .iter()
             .map(str::to_string)
             .collect();
+        // A column read by name must be unambiguous.
+        for (i, h) in headers.iter().enumerate() {
+            if !h.is_empty() && headers[..i].contains(h) {
+                return Err(CliError::Usage(format!(
+                    "{source_name}: header: column `{h}` appears more than once"
+                )));
+            }
+        }
         let mut rows = Vec::new();
         let mut lines = Vec::new();
         for rec in rdr.records() {
@@ -258,6 +266,16 @@ pub fn output_headers(input: &Table, extra: &[&str]) -> Vec<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_column_named_twice_is_refused() {
+        let e = Table::parse("in.csv", "k,J1,k\n1,2,3\n").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "in.csv: header: column `k` appears more than once"
+        );
+        assert!(Table::parse("in.csv", "k,J1\n1,2\n").is_ok());
+    }
 
     #[test]
     fn parses_comments_inf_and_names_bad_cells() {

@@ -151,17 +151,34 @@ fn thermal_rows_match_the_library() {
         assert_eq!(col("fy"), e.fy, "row {i}");
         assert_eq!(col("mu_used"), e.mu_used, "row {i}");
     }
-    // A user fluid needs its temperature coefficient.
-    let e = fails(
-        &["contact", "--thermal"],
-        &format!(
-            "{HEADER},m,mu,film_thickness,fluid_conductivity\n{HS_K5},4620,80,0,0.5,0,73,35,0.075,5e-7,0.11\n"
+    // A user fluid needs its temperature coefficient, conductivity and film:
+    // the error names the column that supplies each.
+    for (columns, values, missing) in [
+        (
+            "film_thickness,fluid_conductivity",
+            "5e-7,0.11",
+            "mu_temperature_coefficient",
         ),
-    );
-    assert!(
-        e.contains("row 1") && e.contains("temperature coefficient"),
-        "{e}"
-    );
+        (
+            "film_thickness,mu_temperature_coefficient",
+            "5e-7,0.003",
+            "fluid_conductivity",
+        ),
+        (
+            "fluid_conductivity,mu_temperature_coefficient",
+            "0.11,0.003",
+            "film_thickness",
+        ),
+    ] {
+        let e = fails(
+            &["contact", "--thermal"],
+            &format!("{HEADER},m,mu,{columns}\n{HS_K5},4620,80,0,0.5,0,73,35,0.075,{values}\n"),
+        );
+        assert!(
+            e.contains("row 1") && e.contains(&format!("needs `{missing}`")),
+            "{e}"
+        );
+    }
     // Unphysical property: named with its range.
     let e = fails(
         &["contact", "--thermal"],
