@@ -638,14 +638,8 @@ fn rigid_plastic_matches_a_brute_force_reference() {
 /// U → 0 has J's set by the rolling-speed floor); the viscoelastic model with
 /// D 0.01–100 and Z0 ∞ or 0.3–3.3. Prints the worst case per tol.
 fn wide_range_scan(viscoelastic: bool, seed: u64, n: usize) -> [f64; 3] {
-    let mut s = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
-    let mut r = move || {
-        // xorshift64.
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = traction_testkit::XorShift64::new(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+    let mut r = move || rng.unit();
     let tols = [1e-2, 1e-3, 1e-4];
     let mut worst = [
         (0.0_f64, String::new()),
