@@ -451,6 +451,18 @@ fn rigid_scaled(inp: &Inputs) -> ep::Scaled {
 /// tol = 1e-4).
 const SMOOTH_STEP_FACTOR: f64 = 2.0;
 
+/// The plastic steps of [`evaluate`]'s strips at the accuracy `tol` (as in
+/// `adaptive`): the s-step, the longer s-step of non-stiff segments, the
+/// longest exponential step (0: none) and whether steps near vy = 0 may be
+/// set by the exact turn of the slip direction; also the viscoelastic
+/// model's cap.
+pub(crate) fn plastic_steps(tol: f64) -> (f64, f64, f64, bool) {
+    let s_step = Accuracy { tol }.s_step();
+    let h = s_step.clamp(1e-4, 0.5);
+    let hs = (SMOOTH_STEP_FACTOR * s_step).clamp(h, 1.0);
+    (h, hs, ep::etd_step(tol, h), true)
+}
+
 fn adaptive(
     inp: &Inputs,
     tol: f64,

@@ -60,8 +60,8 @@ impl Strip {
             Event::Plastic { x, n } => {
                 let sn = (x / c).clamp(-1.0, 1.0);
                 let cs = (1.0 - sn * sn).max(0.0).sqrt();
-                let g = self.g(sn, cs, n.0, n.1);
-                let d = self.g_rate(sn, cs, n.0, n.1);
+                let g = self.g::<false>(sn, cs, n.0, n.1);
+                let d = self.g_rate::<false>(sn, cs, n.0, n.1);
                 m = m.min(g.max(0.0));
                 match prev {
                     None => yield_sn = sn,

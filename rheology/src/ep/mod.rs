@@ -56,8 +56,8 @@ use plastic::ETD_MIN_STEP;
 #[cfg(test)]
 pub(crate) use quadrature::panel_sums;
 pub(crate) use quadrature::{
-    MAX_BREAKS, adaptive_in_phi, contact_integral, contact_integral_adaptive_at, graded_breaks,
-    refine_share, solve, solve_adaptive, to_j,
+    MAX_BREAKS, adaptive_in_phi, contact_integral, contact_integral_adaptive_at, etd_step,
+    graded_breaks, refine_share, solve, solve_adaptive, to_j,
 };
 
 /// Smallest cos s at which the anisotropic flow term (3/2)·tan s (= −dL/dX)
@@ -102,6 +102,10 @@ pub struct Resolution {
     pub s_step: f64,
 }
 
+/// Where a segment on the limit ends before the outlet
+/// ([`Strip::limit_segment`]): X and the stress Z there.
+pub(crate) type LimitEnd = (f64, (f64, f64));
+
 /// Strip integrals ∫Zx dX, ∫Zy dX, ∫Zy·X dX.
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct StripSums {
@@ -128,6 +132,10 @@ pub(crate) struct Strip {
     pub b1: f64,
     pub q2: f64,
     pub gy: f64,
+    /// The viscous law of the viscoelastic model, whose stress leaves the
+    /// limit (its cap) where the plastic multiplier falls below the viscous
+    /// rate ψ(L) (see [`Strip::limit_segment`]); None: elastic/plastic.
+    pub vis: Option<crate::visco::Law>,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -248,9 +256,50 @@ impl Strip {
         }
     }
 
+    /// The unloading margin on the limit: g = (v·n)·cos s + (3/2)·sin s
+    /// = cos s·(n·e − dL/dX), ≥ 0 while the plastic multiplier is; with a
+    /// viscous law the stress stays on its cap while n·e − dL/dX ≥
+    /// ψ(L)·n·G·n, so g − ψ(L)·(nx² + gy·ny²)·cos s.
+    /// (`VIS = false`: the elastic/plastic model's, without the viscous
+    /// term, checked at compile time.)
     #[inline]
-    fn g(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
-        (self.a * nx + self.vy(self.c * sn) * ny) * cs + 1.5 * sn
+    fn g<const VIS: bool>(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
+        let g = (self.a * nx + self.vy(self.c * sn) * ny) * cs + 1.5 * sn;
+        match &self.vis {
+            Some(law) if VIS => {
+                let ngn = nx * nx + self.gy * ny * ny;
+                g - law.psi(1.5 * self.c * cs) * ngn * cs
+            }
+            _ => g,
+        }
+    }
+
+    /// The stress on the limit from (sn, cs) with the unit direction n, to
+    /// the outlet (None) or to where it leaves the limit (X and Z there):
+    /// the plastic segments of the strip integration with the steps `steps`
+    /// (s-step, longer s-step, exponential step, exact turn; see
+    /// `integrate_with`), and its sums ∫Zx dX, ∫Zy dX, ∫Zy·X dX. With a
+    /// viscous law ([`Strip::vis`]) this is the viscoelastic model's cap: on
+    /// it the viscous and the plastic strain rates are both along Z, so the
+    /// direction follows the same flow, and only the end differs (`g`).
+    pub(crate) fn limit_segment(
+        &self,
+        sn: f64,
+        cs: f64,
+        n: (f64, f64),
+        allow_unload: bool,
+        steps: (f64, f64, f64, bool),
+    ) -> (StripSums, Option<LimitEnd>) {
+        let mut acc = StripSums::default();
+        let end = if self.gy == 1.0 {
+            self.plastic::<true, true>(sn, cs, n, &mut acc, allow_unload, steps, &mut |_| {})
+        } else {
+            self.plastic::<false, true>(sn, cs, n, &mut acc, allow_unload, steps, &mut |_| {})
+        };
+        match end {
+            PlasticEnd::Outlet => (acc, None),
+            PlasticEnd::Unload { x, z } => (acc, Some((x, z))),
+        }
     }
 
     /// Integrate the strip from the inlet to the outlet.
@@ -326,9 +375,9 @@ impl Strip {
             let n = (z.0 / m, z.1 / m);
             let allow_unload = switches < MAX_SWITCH;
             let end = if self.gy == 1.0 {
-                self.plastic::<true>(sn, cs, n, &mut acc, allow_unload, steps, rec)
+                self.plastic::<true, false>(sn, cs, n, &mut acc, allow_unload, steps, rec)
             } else {
-                self.plastic::<false>(sn, cs, n, &mut acc, allow_unload, steps, rec)
+                self.plastic::<false, false>(sn, cs, n, &mut acc, allow_unload, steps, rec)
             };
             match end {
                 PlasticEnd::Outlet => break,
@@ -396,6 +445,7 @@ impl Scaled {
             b1: self.gy * self.b1,
             q2: self.gy * self.q2,
             gy: self.gy,
+            vis: None,
         }
     }
 }
@@ -459,6 +509,7 @@ mod tests {
             b1: 0.0,
             q2: 0.0,
             gy: 1.0,
+            vis: None,
         };
         // The yield point is found to round-off; the plastic part is RK4
         // (Simpson) on the smooth 1.5·cos²s: error ≈ 5e-8 at h = 0.1 and

@@ -313,6 +313,18 @@ pub(crate) fn graded_breaks(
     n + 1
 }
 
+/// The longest exponential step at `tol` with the s-step `s_step`:
+/// [`ETD_STEP`]·√(tol/1e-3), at most [`ETD_STEP_MAX`]; 0 (none) where that
+/// is shorter than ETD_MIN_STEP s-steps (below tol ≈ 1e-5).
+pub(crate) fn etd_step(tol: f64, s_step: f64) -> f64 {
+    let etd_step = (ETD_STEP * (tol / 1e-3).sqrt()).min(ETD_STEP_MAX);
+    if etd_step >= ETD_MIN_STEP * s_step {
+        etd_step
+    } else {
+        0.0
+    }
+}
+
 /// Elastic/plastic (J4, J5, J6) by Lobatto–Kronrod panels in Y
 /// ([`lobatto_kronrod_in_phi`]) from the panels of [`initial_breaks`], below
 /// tol 4e-4 split at located kinks;
@@ -339,13 +351,7 @@ pub(crate) fn solve_adaptive(
 ) -> (f64, f64, f64) {
     let mut breaks = [0.0; MAX_BREAKS];
     let nb = initial_breaks(sc, tol, &mut breaks);
-    let etd_step = (ETD_STEP * (tol / 1e-3).sqrt()).min(ETD_STEP_MAX);
-    // None shorter than ETD_MIN_STEP s-steps (below tol ≈ 1e-5).
-    let etd_step = if etd_step >= ETD_MIN_STEP * s_step {
-        etd_step
-    } else {
-        0.0
-    };
+    let etd_step = etd_step(tol, s_step);
     let strip = |y: f64, margin: bool| {
         let s = sc.strip(y);
         let (st, topology, m) = if margin {

@@ -320,6 +320,7 @@ mod tests {
                             b1,
                             q2,
                             gy: 1.0,
+                            vis: None,
                         };
                         let mut starts = vec![(-c, (0.0, 0.0))];
                         // Unloading at X = −0.3c with the stress opposing
@@ -367,6 +368,7 @@ mod tests {
             b1: 0.0,
             q2,
             gy: 1.0,
+            vis: None,
         };
         let mut n = 0;
         for i in 0..1000 {

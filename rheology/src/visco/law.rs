@@ -34,7 +34,7 @@ impl Law {
     /// (μ, ψ′) at |Z| = r: μ = ψ(r)/r = Z0·sinh(r/Z0)/(D·r) and
     /// ψ′ = cosh(r/Z0)/D (both 1/D at r = 0 and for Z0 = ∞).
     #[inline]
-    pub(super) fn rates(&self, r: f64) -> (f64, f64) {
+    pub(crate) fn rates(&self, r: f64) -> (f64, f64) {
         let id = self.id;
         let x = r * self.iz0;
         if x < 0.01 {
@@ -68,7 +68,7 @@ impl Law {
 
     /// ψ(r) = (Z0/D)·sinh(r/Z0), the viscous strain rate at |Z| = r.
     #[inline]
-    pub(super) fn psi(&self, r: f64) -> f64 {
+    pub(crate) fn psi(&self, r: f64) -> f64 {
         (self.rates(r).0 * r).min(RATE_MAX)
     }
 }
@@ -82,11 +82,14 @@ pub(crate) struct VStrip {
     pub q2: f64,
     pub gy: f64,
     pub law: Law,
+    /// The elastic/plastic model's plastic steps for the cap
+    /// (`crate::plastic_steps`).
+    pub steps: (f64, f64, f64, bool),
 }
 
 impl VStrip {
     /// The elastic/plastic model's strip with the viscous law `law`.
-    pub(super) fn new(st: Strip, law: Law) -> Self {
+    pub(super) fn new(st: Strip, law: Law, steps: (f64, f64, f64, bool)) -> Self {
         VStrip {
             c: st.c,
             a: st.a,
@@ -94,6 +97,20 @@ impl VStrip {
             q2: st.q2,
             gy: st.gy,
             law,
+            steps,
+        }
+    }
+
+    /// The elastic/plastic strip with this law, whose plastic segments are
+    /// the cap ([`Strip::limit_segment`]).
+    pub(super) fn limit_strip(&self) -> Strip {
+        Strip {
+            c: self.c,
+            a: self.a,
+            b1: self.b1,
+            q2: self.q2,
+            gy: self.gy,
+            vis: Some(self.law),
         }
     }
 }

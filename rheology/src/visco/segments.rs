@@ -182,7 +182,9 @@ pub(super) trait Seg<const N: usize> {
 
 /// Interior of the cap: state Z.
 pub(super) struct Interior<'a>(pub(super) &'a VStrip);
-/// On the cap: state θ, Z = L·(cos θ, sin θ); n(θ) is evaluated by
+/// On the cap with an anisotropic stiffness (gy ≠ 1; isotropic caps are the
+/// elastic/plastic model's plastic segments, `strip.rs`): state θ,
+/// Z = L·(cos θ, sin θ); n(θ) is evaluated by
 /// rotating n(θ0) of the step's start by θ − θ0. Only such differences
 /// enter, so θ is counted from the direction at the cap entry (θ = 0 there,
 /// n0 = Z/|Z|).

@@ -7,7 +7,9 @@
 //! interior at a located unloading, leaves a cap entry close to the outlet
 //! unfollowed ([`outlet_bound`]), and ends at the outlet with the strip's
 //! sums ∫Zx dX, ∫Zy dX, ∫Zy·X dX for the panels across the contact
-//! (`mod.rs`).
+//! (`mod.rs`). With an isotropic stiffness a cap segment is instead the
+//! elastic/plastic model's plastic segment with the cap's end
+//! ([`cap_segment`]): on the cap the direction follows the same flow.
 
 use std::f64::consts::PI;
 
@@ -26,7 +28,8 @@ const MAX_STEPS: usize = 1000;
 #[derive(Clone, Copy)]
 enum Mode {
     Interior([f64; 2]),
-    /// θ and (cos θ, sin θ).
+    /// On the cap with an anisotropic stiffness (gy ≠ 1): θ and its
+    /// direction (cos θ, sin θ).
     Cap(f64, (f64, f64)),
 }
 
@@ -117,6 +120,35 @@ fn first_step(st: &VStrip, atol: f64) -> f64 {
         h = (dr / st.c).sqrt() * (INLET_K * atol / (ein * dr)).powf(0.2);
     }
     h
+}
+
+/// The stress on the cap from `p` in the direction `n0`: the elastic/plastic
+/// model's plastic segment with the cap's end ([`VStrip::limit_strip`]), in
+/// its angle s = σ − π/2 (X = −c·cos σ = c·sin s). Returns the strip sums
+/// over it and, where the stress leaves the cap before the outlet, the point
+/// and the stress there.
+#[inline(never)]
+fn cap_segment(
+    st: &VStrip,
+    p: Pt,
+    n0: (f64, f64),
+    allow_unload: bool,
+) -> ([f64; 3], Option<(Pt, [f64; 2])>) {
+    let ep = st.limit_strip();
+    let (sums, end) = ep.limit_segment(-p.cs, p.sn.max(0.0), n0, allow_unload, st.steps);
+    let end = end.map(|(x, z)| {
+        let cs = (-x / st.c).clamp(-1.0, 1.0);
+        let sn = (1.0 - cs * cs).max(0.0).sqrt();
+        (
+            Pt {
+                s: cs.acos(),
+                sn,
+                cs,
+            },
+            [z.0, z.1],
+        )
+    });
+    ([sums.ix, sums.iy, sums.ixy], end)
 }
 
 /// The Rosenbrock step from `p` (state `u`, with its rates and Jacobian
@@ -277,8 +309,23 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
                             (1.0, 0.0)
                         }
                     };
-                    mode = Mode::Cap(0.0, n0);
                     switches += 1;
+                    if st.gy == 1.0 {
+                        // The elastic/plastic flow to the outlet or to where
+                        // the stress leaves the cap.
+                        let (dq, end) = cap_segment(st, p, n0, switches < MAX_SWITCH);
+                        add(&mut q, &dq);
+                        match end {
+                            None => break,
+                            Some((pu, zu)) => {
+                                p = pu;
+                                mode = Mode::Interior(zu);
+                                switches += 1;
+                            }
+                        }
+                    } else {
+                        mode = Mode::Cap(0.0, n0);
+                    }
                 } else {
                     add(&mut q, &stp.dq);
                     p = p1;

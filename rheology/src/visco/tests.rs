@@ -6,7 +6,13 @@ use super::segments::Cap;
 use super::*;
 use crate::{Inputs, Resolution};
 
-fn strip(c: f64, a: f64, b1: f64, d: f64) -> VStrip {
+/// The cap's plastic steps for the strip error `atol` (the contact's
+/// tol = atol/STRIP_TOL).
+fn steps_for(atol: f64) -> (f64, f64, f64, bool) {
+    crate::plastic_steps(atol / STRIP_TOL)
+}
+
+fn strip(c: f64, a: f64, b1: f64, d: f64, atol: f64) -> VStrip {
     VStrip {
         c,
         a,
@@ -14,6 +20,7 @@ fn strip(c: f64, a: f64, b1: f64, d: f64) -> VStrip {
         q2: 0.0,
         gy: 1.0,
         law: Law::new(f64::INFINITY, d),
+        steps: steps_for(atol),
     }
 }
 
@@ -44,10 +51,9 @@ fn strip_matches_the_maxwell_closed_form() {
         (1.0, 10.0, 2.0, 1.0),
         (0.1, -4.0, 2.0, 0.3),
     ] {
-        let st = strip(c, a, b1, d);
-        let ex = reference::maxwell_strip(&st);
+        let ex = reference::maxwell_strip(&strip(c, a, b1, d, 1e-3));
         for atol in [1e-3, 1e-4, 1e-6] {
-            let v = strip_sums(&st, atol);
+            let v = strip_sums(&strip(c, a, b1, d, atol), atol);
             let e = (0..3).map(|i| (v[i] - ex[i]).abs()).fold(0.0, f64::max);
             worst = worst.max(e / atol);
             assert!(e <= atol, "c {c} a {a} b1 {b1} D {d} atol {atol}: {e:e}");
@@ -74,10 +80,10 @@ fn maxwell_contact_at_zero_spin_is_exact() {
         let p = Scaled::of(&inp);
         let law = Law::new(f64::INFINITY, d);
         let r = reference::contact_exact(&p, 64, |y| {
-            reference::maxwell_strip(&VStrip::new(p.strip(y), law))
+            reference::maxwell_strip(&VStrip::new(p.strip(y), law, steps_for(1e-3)))
         });
         let r2 = reference::contact_exact(&p, 128, |y| {
-            reference::maxwell_strip(&VStrip::new(p.strip(y), law))
+            reference::maxwell_strip(&VStrip::new(p.strip(y), law, steps_for(1e-3)))
         });
         assert!(max_dev(r, r2) < 1e-10, "{r:?} {r2:?}");
         for tol in [1e-3, 1e-4] {
@@ -437,6 +443,7 @@ fn cap_rate_derivatives_match_central_differences() {
             q2,
             gy,
             law: Law::new(1.0, 1.0),
+            steps: steps_for(1e-3),
         };
         let cap = Cap::new(&st, 0.0, (1.0, 0.0));
         for &(s, th) in &[

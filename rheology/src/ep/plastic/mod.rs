@@ -256,9 +256,11 @@ impl Strip {
         q
     }
 
-    /// Plastic flow from yield at X = c·sn (with unit direction n) on.
+    /// Plastic flow from yield at X = c·sn (with unit direction n) on;
+    /// `VIS`: to the end of the viscoelastic cap instead of unloading (the
+    /// viscous term of `Strip::g`, `Strip::limit_segment`).
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn plastic<const ISO: bool>(
+    pub(super) fn plastic<const ISO: bool, const VIS: bool>(
         &self,
         sn: f64,
         cs: f64,
@@ -314,7 +316,7 @@ impl Strip {
             && let Some((ne, he)) = self.etd_steps(sn, cs, span, s_step, etd_step)
         {
             let steps = (s_step, ne, he);
-            return self.plastic_etd(sn, cs, n, acc, allow_unload, steps, rec);
+            return self.plastic_etd::<VIS>(sn, cs, n, acc, allow_unload, steps, rec);
         }
         // Segments that are stiff for RK4 at the longer s-step (κ·h >
         // KAPPA_H) and take no exponential steps, where κ·h ≤
@@ -324,7 +326,7 @@ impl Strip {
         // stiff for RK4 at the s-step too, the same at the s-step.
         if !nonstiff && etd_step > 0.0 && ok(h, RK5_KAPPA_H_STIFF) {
             let steps = (s_step, nsteps, h);
-            return self.plastic_rk5::<ISO>(sn, cs, n, acc, allow_unload, steps, rec);
+            return self.plastic_rk5::<ISO, VIS>(sn, cs, n, acc, allow_unload, steps, rec);
         }
         if !nonstiff {
             nsteps = steps(s_step);
@@ -332,7 +334,7 @@ impl Strip {
             nonstiff = ok(h, KAPPA_H);
             if !nonstiff && etd_step > 0.0 && ok(h, RK5_KAPPA_H_STIFF) {
                 let steps = (s_step, nsteps, h);
-                return self.plastic_rk5::<ISO>(sn, cs, n, acc, allow_unload, steps, rec);
+                return self.plastic_rk5::<ISO, VIS>(sn, cs, n, acc, allow_unload, steps, rec);
             }
         }
         let (s2, c2) = sin_cos_small(0.5 * h);
@@ -440,7 +442,7 @@ impl Strip {
                 self.advance::<ISO>(&p, h, c2, s2, a_h_step, step_rates)
             };
             let step = (h, last, allow_unload, a_h);
-            if let Some(end) = self.step_end::<ISO>(&p, &mut q, step, acc, rec) {
+            if let Some(end) = self.step_end::<ISO, VIS>(&p, &mut q, step, acc, rec) {
                 return end;
             }
             p = q;
@@ -488,7 +490,7 @@ impl Strip {
     /// added to `acc` and the end returned; otherwise `q` is recorded and the
     /// segment goes on (None).
     #[inline(always)]
-    fn step_end<const ISO: bool>(
+    fn step_end<const ISO: bool, const VIS: bool>(
         &self,
         p: &PState,
         q: &mut PState,
@@ -501,12 +503,12 @@ impl Strip {
             q.cs = 0.0;
         }
         if allow_unload && q.cs > OUTLET_CS {
-            let g1 = self.g(q.sn, q.cs, q.nx, q.ny);
+            let g1 = self.g::<VIS>(q.sn, q.cs, q.nx, q.ny);
             if g1 < 0.0 {
                 // Copies for the out-of-line call, so that p and q need not
                 // live in memory on the hot path.
                 let (p0, q0) = (*p, *q);
-                let best = self.locate_unload::<ISO>(&p0, &q0, h, g1, a_h);
+                let best = self.locate_unload::<ISO, VIS>(&p0, &q0, h, g1, a_h);
                 *acc += best.acc;
                 let l = 1.5 * self.c * best.cs;
                 rec(Event::Plastic {
@@ -554,7 +556,7 @@ impl Strip {
     /// location.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
-    fn plastic_etd(
+    fn plastic_etd<const VIS: bool>(
         &self,
         sn: f64,
         cs: f64,
@@ -581,7 +583,7 @@ impl Strip {
                 q
             }
         };
-        self.equal_steps::<true>((sn, cs, n), acc, allow_unload, steps, rec, step)
+        self.equal_steps::<true, VIS>((sn, cs, n), acc, allow_unload, steps, rec, step)
     }
 
     /// [`Strip::plastic`] on a segment by `nsteps` steps of length h of the
@@ -589,7 +591,7 @@ impl Strip {
     /// same unloading check and location.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
-    fn plastic_rk5<const ISO: bool>(
+    fn plastic_rk5<const ISO: bool, const VIS: bool>(
         &self,
         sn: f64,
         cs: f64,
@@ -602,7 +604,7 @@ impl Strip {
         let h = steps.2;
         let (s4, c4) = sin_cos_small(0.25 * h);
         let step = |p: &PState| self.rk5::<ISO>(p, h, c4, s4);
-        self.equal_steps::<ISO>((sn, cs, n), acc, allow_unload, steps, rec, step)
+        self.equal_steps::<ISO, VIS>((sn, cs, n), acc, allow_unload, steps, rec, step)
     }
 
     /// The plastic segment from (sn, cs) with direction n in `nsteps` equal
@@ -610,7 +612,7 @@ impl Strip {
     /// [`Strip::plastic_rk5`]), each followed by the unloading check and
     /// location of [`Strip::step_end`].
     #[inline(always)]
-    fn equal_steps<const ISO: bool>(
+    fn equal_steps<const ISO: bool, const VIS: bool>(
         &self,
         (sn, cs, n): (f64, f64, (f64, f64)),
         acc: &mut StripSums,
@@ -630,7 +632,7 @@ impl Strip {
         for i in 1..=nsteps {
             let mut q = step(&p);
             let end = (h, i == nsteps, allow_unload, a_h);
-            if let Some(end) = self.step_end::<ISO>(&p, &mut q, end, acc, rec) {
+            if let Some(end) = self.step_end::<ISO, VIS>(&p, &mut q, end, acc, rec) {
                 return end;
             }
             p = q;

@@ -33,13 +33,26 @@ const UNLOAD_ROOT_PER_STEP4: f64 = 1e-3;
 impl Strip {
     /// dg/ds along the plastic flow at a state on the limit: with
     /// g = (a·nx + vy·ny)·cos s + (3/2)·sin s, dn/ds = θ'·(−ny, nx) and
-    /// dvy/ds = q2·c·cos s.
+    /// dvy/ds = q2·c·cos s (with a viscous law, minus that of its term).
     #[inline]
-    pub(in crate::ep) fn g_rate(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
+    pub(in crate::ep) fn g_rate<const VIS: bool>(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
         let vy = self.vy(self.c * sn);
         let th = self.theta_rate(sn, cs, nx, ny);
         let dvn = th * (vy * nx - self.a * ny) + self.q2 * self.c * cs * ny;
-        dvn * cs - (self.a * nx + vy * ny) * sn + 1.5 * cs
+        let r = dvn * cs - (self.a * nx + vy * ny) * sn + 1.5 * cs;
+        match &self.vis {
+            Some(law) if VIS => {
+                // d/ds of ψ(L)·N·cos s, L = (3/2)·c·cos s, N = nx² + gy·ny²
+                // (dN/ds = 2(gy − 1)·nx·ny·θ').
+                let l = 1.5 * self.c * cs;
+                let (mu, dpsi) = law.rates(l);
+                let psi = mu * l;
+                let ngn = nx * nx + self.gy * ny * ny;
+                let dngn = 2.0 * (self.gy - 1.0) * nx * ny * th;
+                r - (dpsi * (-1.5 * self.c * sn) * ngn * cs + psi * (dngn * cs - ngn * sn))
+            }
+            _ => r,
+        }
     }
 
     /// The state where unloading begins inside the step of length `h` from
@@ -55,7 +68,7 @@ impl Strip {
     /// round-off) without the last criterion, where regula falsi alone took
     /// 4–5, to the same point.
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn locate_unload<const ISO: bool>(
+    pub(super) fn locate_unload<const ISO: bool, const VIS: bool>(
         &self,
         p: &PState,
         q: &PState,
@@ -63,7 +76,7 @@ impl Strip {
         g1: f64,
         a_h: f64,
     ) -> PState {
-        let g0 = self.g(p.sn, p.cs, p.nx, p.ny).max(0.0);
+        let g0 = self.g::<VIS>(p.sn, p.cs, p.nx, p.ny).max(0.0);
         let (mut tl, mut gl, mut th, mut gh) = (0.0, g0, h, g1);
         let mut best = *p;
         let mut side = 0i32;
@@ -71,9 +84,9 @@ impl Strip {
         let t_tol = UNLOAD_ROOT_PER_STEP4 * (s_step * s_step) * (s_step * s_step);
         let mut newton = hermite_root(
             g0,
-            h * self.g_rate(p.sn, p.cs, p.nx, p.ny),
+            h * self.g_rate::<VIS>(p.sn, p.cs, p.nx, p.ny),
             g1,
-            h * self.g_rate(q.sn, q.cs, q.nx, q.ny),
+            h * self.g_rate::<VIS>(q.sn, q.cs, q.nx, q.ny),
         ) * h;
         for _ in 0..UNLOAD_ITERATIONS {
             let t = if newton > tl && newton < th {
@@ -85,12 +98,12 @@ impl Strip {
             };
             let (st, ct) = sin_cos_small(0.5 * t);
             let r = self.advance::<ISO>(p, t, ct, st, a_h, None);
-            let gr = self.g(r.sn, r.cs, r.nx, r.ny);
+            let gr = self.g::<VIS>(r.sn, r.cs, r.nx, r.ny);
             best = r;
             if gr.abs() < UNLOAD_G_TOL {
                 break;
             }
-            let dg = self.g_rate(r.sn, r.cs, r.nx, r.ny);
+            let dg = self.g_rate::<VIS>(r.sn, r.cs, r.nx, r.ny);
             if (gr / dg).abs() <= t_tol {
                 break;
             }
