@@ -274,6 +274,22 @@ impl Strip {
         }
     }
 
+    /// `g` where only its sign is needed (a step's end): with a viscous law
+    /// ψ(L) ≤ ψ(3/2) decides g ≥ 0 without ψ(L) (an exponential) wherever
+    /// that bound leaves g ≥ 0, and the value returned is then the
+    /// elastic/plastic g (≥ 0 too); otherwise `g` itself.
+    #[inline]
+    fn g_sign<const VIS: bool>(&self, sn: f64, cs: f64, nx: f64, ny: f64) -> f64 {
+        if VIS && let Some(law) = &self.vis {
+            let g = self.g::<false>(sn, cs, nx, ny);
+            let ngn = nx * nx + self.gy * ny * ny;
+            if g - law.psi_max() * ngn * cs >= 0.0 {
+                return g;
+            }
+        }
+        self.g::<VIS>(sn, cs, nx, ny)
+    }
+
     /// The stress on the limit from (sn, cs) with the unit direction n, to
     /// the outlet (None) or to where it leaves the limit (X and Z there):
     /// the plastic segments of the strip integration with the steps `steps`

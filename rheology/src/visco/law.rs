@@ -14,20 +14,26 @@ const RATE_MAX: f64 = 1e100;
 /// The viscous law: Deborah number D and reference stress Z0 (`inf`: Maxwell).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Law {
-    pub z0: f64,
     pub d: f64,
     /// 1/D and 1/Z0.
     id: f64,
     iz0: f64,
+    /// ψ(3/2), the largest viscous rate inside the contact.
+    pmax: f64,
 }
 
 impl Law {
     pub(crate) fn new(z0: f64, d: f64) -> Self {
+        let pmax = if z0.is_infinite() {
+            1.5 / d
+        } else {
+            z0 / d * (1.5 / z0).sinh()
+        };
         Law {
-            z0,
             d,
             id: 1.0 / d,
             iz0: 1.0 / z0,
+            pmax,
         }
     }
 
@@ -59,11 +65,7 @@ impl Law {
     /// The largest viscous rate inside the contact, ψ(3/2) (infinite when
     /// it overflows).
     pub(crate) fn psi_max(&self) -> f64 {
-        if self.z0.is_infinite() {
-            1.5 / self.d
-        } else {
-            self.z0 / self.d * (1.5 / self.z0).sinh()
-        }
+        self.pmax
     }
 
     /// ψ(r) = (Z0/D)·sinh(r/Z0), the viscous strain rate at |Z| = r.

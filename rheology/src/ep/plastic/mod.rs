@@ -503,7 +503,7 @@ impl Strip {
             q.cs = 0.0;
         }
         if allow_unload && q.cs > OUTLET_CS {
-            let g1 = self.g::<VIS>(q.sn, q.cs, q.nx, q.ny);
+            let g1 = self.g_sign::<VIS>(q.sn, q.cs, q.nx, q.ny);
             if g1 < 0.0 {
                 // Copies for the out-of-line call, so that p and q need not
                 // live in memory on the hot path.
