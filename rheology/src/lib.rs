@@ -419,8 +419,7 @@ pub fn evaluate(inp: &Inputs, model: Model, acc: Accuracy) -> Result<Outputs, Rh
                     + inp.dx * j5 / inp.k.sqrt();
                 (j4, j5, j6)
             } else {
-                let h = acc.s_step();
-                return adaptive(inp, acc.tol, h, SMOOTH_STEP_FACTOR * h);
+                return adaptive(inp, acc.tol);
             }
         }
         Model::RigidPlastic => return rigid_plastic(inp, acc),
@@ -451,10 +450,10 @@ fn rigid_scaled(inp: &Inputs) -> ep::Scaled {
 /// tol = 1e-4).
 const SMOOTH_STEP_FACTOR: f64 = 2.0;
 
-/// The plastic steps of [`evaluate`]'s strips at the accuracy `tol` (as in
-/// `adaptive`): the s-step, the longer s-step of non-stiff segments, the
-/// longest exponential step (0: none) and whether steps near vy = 0 may be
-/// set by the exact turn of the slip direction; also the viscoelastic
+/// The plastic steps of [`evaluate`]'s strips at the accuracy `tol`: the
+/// s-step [`Accuracy::s_step`], the longer s-step of non-stiff segments,
+/// the longest exponential step (0: none) and whether steps near vy = 0 may
+/// be set by the exact turn of the slip direction; also the viscoelastic
 /// model's cap.
 pub(crate) fn plastic_steps(tol: f64) -> (f64, f64, f64, bool) {
     let s_step = Accuracy { tol }.s_step();
@@ -463,21 +462,14 @@ pub(crate) fn plastic_steps(tol: f64) -> (f64, f64, f64, bool) {
     (h, hs, ep::etd_step(tol, h), true)
 }
 
-fn adaptive(
-    inp: &Inputs,
-    tol: f64,
-    s_step: f64,
-    s_step_smooth: f64,
-) -> Result<Outputs, RheologyError> {
+fn adaptive(inp: &Inputs, tol: f64) -> Result<Outputs, RheologyError> {
     inp.validate()?;
     let m = inp.j1.abs().max(inp.j2.abs()).max(inp.j3.abs());
     if m > J_RIGID {
         return rigid_plastic(inp, Accuracy { tol: 1e-6 });
     }
     let sc = ep::Scaled::of(inp);
-    let h = s_step.clamp(1e-4, 0.5);
-    let hs = s_step_smooth.clamp(h, 1.0);
-    let (j4, j5, j6) = ep::solve_adaptive(&sc, tol, h, hs);
+    let (j4, j5, j6) = ep::solve_adaptive(&sc, tol, plastic_steps(tol));
     Ok(finish(inp, j4, j5, j6))
 }
 

@@ -327,11 +327,11 @@ pub(crate) fn etd_step(tol: f64, s_step: f64) -> f64 {
 
 /// Elastic/plastic (J4, J5, J6) by Lobatto–Kronrod panels in Y
 /// ([`lobatto_kronrod_in_phi`]) from the panels of [`initial_breaks`], below
-/// tol 4e-4 split at located kinks;
-/// s-step `s_step`, or `s_step_smooth` (≥ `s_step`) on plastic segments
-/// that are non-stiff at it, exponential steps of up to
-/// [`ETD_STEP`]·√(tol/1e-3) on stiff segments where the slip direction
-/// turns slowly ([`Strip::integrate_etd`]).
+/// tol 4e-4 split at located kinks; the plastic steps `steps`
+/// (`crate::plastic_steps`): s-step, or the longer s-step on plastic
+/// segments that are non-stiff at it, exponential steps of up to
+/// [`etd_step`] on stiff segments where the slip direction turns slowly
+/// ([`Strip::integrate_etd`]).
 ///
 /// Without longitudinal slip (J1 = 0, so a = −J3·Y) the strip at −Y is the
 /// mirror image of the strip at Y (Zx → −Zx; the stiffness G = diag(1, gy)
@@ -346,12 +346,10 @@ pub(crate) fn etd_step(tol: f64, s_step: f64) -> f64 {
 pub(crate) fn solve_adaptive(
     sc: &Scaled,
     tol: f64,
-    s_step: f64,
-    s_step_smooth: f64,
+    (s_step, s_step_smooth, etd_step, _): (f64, f64, f64, bool),
 ) -> (f64, f64, f64) {
     let mut breaks = [0.0; MAX_BREAKS];
     let nb = initial_breaks(sc, tol, &mut breaks);
-    let etd_step = etd_step(tol, s_step);
     let strip = |y: f64, margin: bool| {
         let s = sc.strip(y);
         let (st, topology, m) = if margin {
