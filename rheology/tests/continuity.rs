@@ -64,6 +64,39 @@ fn spin_moment_is_continuous_at_zero_spin() {
 }
 
 #[test]
+fn spin_moment_has_no_jump_at_zero_spin_at_working_tolerances() {
+    // Across J3 = 0 the zero-spin closed form meets the integrator: at each
+    // working tolerance the step |Δ| from J3 = 0 to J3 = ±1e-9 is the
+    // integrator's error there, and must stay below tol/10 (smooth outputs
+    // for finite-difference Jacobians). Worst at small k and large side
+    // slip, where the strips are plastic almost from the inlet and the
+    // moment ∫Zy·X dX, a small difference of large parts, is weighed by
+    // 1/(π√k) in J6: with Simpson's rule for the strip sums over the
+    // exponential steps (up to 0.8 rad) the step was 0.985·tol at k = 0.063,
+    // J = (0, 3.85, ±1e-9), tol 1e-3 (J6); with the 3-point Gauss rule
+    // (`Strip::etd`) ≤ 0.01·tol over this grid (k = 1, J2 = −6, tol 1e-4).
+    for tol in [1e-2, 1e-3, 1e-4] {
+        for &k in &[0.063, 0.1, 0.3, 1.0] {
+            for &(j1, j2) in &[(0.0, 3.85), (0.0, -6.0), (2e-3, 10.0), (0.5, 4.0)] {
+                let at = |j3: f64| ev(&Inputs::new(k, j1, j2, j3).unwrap(), tol);
+                let zero = at(0.0);
+                for j3 in [1e-9, -1e-9] {
+                    let o = at(j3);
+                    let d = (o.j4 - zero.j4)
+                        .abs()
+                        .max((o.j5 - zero.j5).abs())
+                        .max((o.j6 - zero.j6).abs());
+                    assert!(
+                        d < 0.1 * tol,
+                        "tol {tol:e} k={k} J=({j1},{j2},{j3}): step {d:.2e}, {o:?} vs {zero:?}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
 fn half_contact_without_longitudinal_slip_matches_full_integration() {
     // J1 = 0: `evaluate` integrates only Y ≥ 0 and mirrors (J4 = 0, J5 and J6
     // doubled). At J1 = ±1e-15 the whole contact is integrated, with the same

@@ -371,6 +371,31 @@ fn exponential_steps_match_fine_rk4_on_stiff_strips() {
 }
 
 #[test]
+fn exponential_steps_integrate_the_moment_of_nearly_plastic_strips() {
+    // Large side slip, tiny spin, small k (k = 0.063, J = (0, 3.85, 1e-9)):
+    // the strips yield right after the inlet and stay plastic with n ≈ (0, 1),
+    // so ∫Zy·X dX ≈ ∫L·X dX is a small difference of large parts; the
+    // segments are stiff and the slip direction does not turn, so
+    // `integrate_etd` takes exponential steps of 0.8 (those of tol 1e-3).
+    // Against RK4 at h = 1e-4: measured ≤ 4.8e-6 (the 3-point Gauss
+    // rule's error on the weights, ≈ 3e-5 per step at most); with Simpson's
+    // rule on the stages it was 6.6e-4 at Y = 0, which weighed by
+    // 1/(π√k) put J6 0.99·tol off at tol 1e-3. Bound 1e-5. The exponential
+    // path is taken: the result differs from RK4 at the same s-steps by
+    // > 1e-7 (measured ≥ 3.8e-7).
+    let sc = Scaled::new(0.063, 0.0, 3.85, 1e-9, 0.0);
+    for y in [0.0, 0.5, 0.9] {
+        let st = sc.strip(y);
+        let r = st.integrate(1e-4, 1e-4);
+        let e = st.integrate_etd(0.1, 0.2, 0.8).0;
+        let err = dist(&e, &r);
+        assert!(err < 1e-5, "Y = {y}: {err:e}");
+        let rk4 = st.integrate_etd(0.1, 0.2, 0.0).0;
+        assert!(dist(&e, &rk4) > 1e-7, "Y = {y}");
+    }
+}
+
+#[test]
 fn the_pole_strip_unloads_where_the_slip_reverses() {
     // The spin pole's strip (a = 0 exactly) against its neighbour at
     // ΔY = 1e-12 (a = −1e-12·J3 ≤ 1e-6, whose sums differ by ≈ 3e-5·|a|):
