@@ -8,6 +8,14 @@ mod common;
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Outputs, Resolution, evaluate};
 
+/// max(|ΔJ4|, |ΔJ5|, |ΔJ6|).
+fn dev(a: &Outputs, b: &Outputs) -> f64 {
+    (a.j4 - b.j4)
+        .abs()
+        .max((a.j5 - b.j5).abs())
+        .max((a.j6 - b.j6).abs())
+}
+
 fn ev(i: &Inputs, tol: f64) -> Outputs {
     evaluate(i, Model::ElasticPlastic, Accuracy::new(tol).unwrap()).unwrap()
 }
@@ -39,10 +47,7 @@ fn spin_moment_is_continuous_at_zero_spin() {
             let zero = at(0.0);
             for j3 in [1e-9, -1e-9] {
                 let o = at(j3);
-                let d = (o.j4 - zero.j4)
-                    .abs()
-                    .max((o.j5 - zero.j5).abs())
-                    .max((o.j6 - zero.j6).abs());
+                let d = dev(&o, &zero);
                 assert!(
                     d < 2e-6,
                     "k={k} J=({j1},{j2},{j3}) dX={dx}: {o:?} vs {zero:?}"
@@ -82,10 +87,7 @@ fn spin_moment_has_no_jump_at_zero_spin_at_working_tolerances() {
                 let zero = at(0.0);
                 for j3 in [1e-9, -1e-9] {
                     let o = at(j3);
-                    let d = (o.j4 - zero.j4)
-                        .abs()
-                        .max((o.j5 - zero.j5).abs())
-                        .max((o.j6 - zero.j6).abs());
+                    let d = dev(&o, &zero);
                     assert!(
                         d < 0.1 * tol,
                         "tol {tol:e} k={k} J=({j1},{j2},{j3}): step {d:.2e}, {o:?} vs {zero:?}"
@@ -126,10 +128,7 @@ fn half_contact_without_longitudinal_slip_matches_full_integration() {
             assert_eq!(zero.j4, 0.0);
             for j1 in [1e-15, -1e-15] {
                 let o = at(j1);
-                let d = (o.j4 - zero.j4)
-                    .abs()
-                    .max((o.j5 - zero.j5).abs())
-                    .max((o.j6 - zero.j6).abs());
+                let d = dev(&o, &zero);
                 println!("k={k} J2={j2} J3={j3} tol={tol:e} J1={j1:e}: {d:.2e}");
                 assert!(
                     d < tol / 100.0,

@@ -29,6 +29,14 @@ fn inp(k: f64, j1: f64, j2: f64, j3: f64) -> Inputs {
     Inputs::new(k, j1, j2, j3).unwrap()
 }
 
+/// max(|ΔJ4|, |ΔJ5|, |ΔJ6|).
+fn dev(a: &Outputs, b: &Outputs) -> f64 {
+    (a.j4 - b.j4)
+        .abs()
+        .max((a.j5 - b.j5).abs())
+        .max((a.j6 - b.j6).abs())
+}
+
 fn ep(i: &Inputs, tol: f64) -> Outputs {
     evaluate(i, Model::ElasticPlastic, Accuracy::new(tol).unwrap()).unwrap()
 }
@@ -672,11 +680,7 @@ fn wide_range_scan(viscoelastic: bool, seed: u64, n: usize) -> [f64; 3] {
         let reference = evaluate(&i, model, Accuracy::new(1e-6).unwrap()).unwrap();
         for (w, tol) in worst.iter_mut().zip(tols) {
             let o = evaluate(&i, model, Accuracy::new(tol).unwrap()).unwrap();
-            let d = (o.j4 - reference.j4)
-                .abs()
-                .max((o.j5 - reference.j5).abs())
-                .max((o.j6 - reference.j6).abs())
-                / tol;
+            let d = dev(&o, &reference) / tol;
             if d > w.0 {
                 *w = (d, format!("k {k:.4} J {j:?} {model:?}"));
             }
@@ -735,11 +739,7 @@ fn side_slip_at_small_k_scan() {
             let reference =
                 evaluate(&i, Model::ElasticPlastic, Accuracy::new(1e-6).unwrap()).unwrap();
             let o = evaluate(&i, Model::ElasticPlastic, Accuracy::new(tol).unwrap()).unwrap();
-            let d = (o.j4 - reference.j4)
-                .abs()
-                .max((o.j5 - reference.j5).abs())
-                .max((o.j6 - reference.j6).abs())
-                / tol;
+            let d = dev(&o, &reference) / tol;
             if d > worst.0 {
                 worst = (d, format!("k {k:.5} J ({j1:.3e}, {j2:.4}, {j3:.3e})"));
             }
