@@ -178,11 +178,17 @@ fn accepted_step<const N: usize, S: Seg<N>>(
 
 /// Strip integrals [∫Zx dX, ∫Zy dX, ∫Zy·X dX], step error estimates
 /// ≤ [`STEP_ACCEPT`]·atol (step sizes aimed at 0.66·atol).
-#[allow(clippy::needless_range_loop)]
 pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
+    strip_sums_topology(st, atol).0
+}
+
+/// [`strip_sums`] and the strip's flow topology: its number of cap entries
+/// and unloadings (the strip sums have a kink in Y where it changes).
+#[allow(clippy::needless_range_loop)]
+pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
     let mut q = [0.0; 3];
     if st.c <= 0.0 {
-        return q;
+        return (q, 0);
     }
     let inter = Interior(st);
     // The largest viscous rate on this strip, ψ((3/2)·c), for
@@ -391,7 +397,7 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
         let (a, b) = c.get();
         c.set((a + 1, b + steps));
     });
-    q
+    (q, switches as u32)
 }
 
 #[cfg(test)]
