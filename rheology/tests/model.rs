@@ -640,14 +640,19 @@ fn rigid_plastic_matches_a_brute_force_reference() {
     }
 }
 
+/// Uniform numbers in [0, 1) of the random scans, from `seed`.
+fn uniform(seed: u64) -> impl FnMut() -> f64 {
+    let mut rng = traction_testkit::XorShift64::new(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+    move || rng.unit()
+}
+
 /// Worst error/tol at tol 1e-2, 1e-3, 1e-4 against tol 1e-6 over `n` random
 /// cases of the whole input range: k 0.063–10, each J 0 (15 %) or of either
 /// sign up to 1e12 (a common scale 1 … 1e12 times 1e-6 … 1 each: a contact at
 /// U → 0 has J's set by the rolling-speed floor); the viscoelastic model with
 /// D 0.01–100 and Z0 ∞ or 0.3–3.3. Prints the worst case per tol.
 fn wide_range_scan(viscoelastic: bool, seed: u64, n: usize) -> [f64; 3] {
-    let mut rng = traction_testkit::XorShift64::new(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
-    let mut r = move || rng.unit();
+    let mut r = uniform(seed);
     let tols = [1e-2, 1e-3, 1e-4];
     let mut worst = [
         (0.0_f64, String::new()),
@@ -723,9 +728,7 @@ fn side_slip_at_small_k_scan() {
     // 1/(π√k): tol 1e-3 against tol 1e-6. Worst error/tol 0.023 (0.98 while
     // the exponential steps took Simpson's rule for the strip sums).
     for seed in 1..=3_u64 {
-        let mut rng =
-            traction_testkit::XorShift64::new(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
-        let mut r = move || rng.unit();
+        let mut r = uniform(seed);
         let tol = 1e-3;
         let mut worst = (0.0_f64, String::new());
         for _ in 0..3000 {
@@ -761,9 +764,7 @@ fn viscoelastic_side_slip_small_deborah_scan() {
     // panels holding such a kink were accepted on their halves' Lobatto
     // values. The margin is thin here: see docs/decisions/0104.
     for seed in 1..=2_u64 {
-        let mut rng =
-            traction_testkit::XorShift64::new(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
-        let mut r = move || rng.unit();
+        let mut r = uniform(seed);
         let mut worst = [(0.0_f64, String::new()), (0.0, String::new())];
         for _ in 0..600 {
             let k = 10f64.powf(-1.2 + 2.2 * r());
