@@ -1,6 +1,6 @@
 //! Developer tools of the traction workspace (`cargo xtask COMMAND ARGS`):
 //!
-//! - `prof CASE TOL REPS`: callgrind driver for the elastic/plastic benches;
+//! - `prof CASE TOL REPS [GY]`: callgrind driver for the elastic/plastic benches;
 //! - `prof-visco CASE TOL REPS [old|gauss]`: the same for the viscoelastic benches;
 //! - `ir [ep|visco] [TOL [CASE...]]`: instructions per cold evaluation of the
 //!   bench cases under callgrind, (Ir(3) − Ir(1))/2;
@@ -30,8 +30,9 @@ mod prof_visco;
 
 const USAGE: &str = "usage: cargo xtask COMMAND ARGS
 commands:
-  prof [CASE [TOL [REPS]]]        callgrind driver: CASE m h p s a b c (bench set, prof.rs),
-                                  TOL accuracy (default 1e-3), REPS evaluations (default 1)
+  prof [CASE [TOL [REPS [GY]]]]   callgrind driver: CASE m h p s a b c (bench set, prof.rs),
+                                  TOL accuracy (default 1e-3), REPS evaluations (default 1),
+                                  GY stiffness ratio gy (default 1)
   prof-visco [CASE [TOL [REPS [old|gauss]]]]
                                   the same for the viscoelastic model: CASE m h x l e g
                                   (prof_visco.rs); `old` = the former fixed-grid scheme,
