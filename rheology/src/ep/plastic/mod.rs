@@ -24,7 +24,7 @@ mod unload;
 
 use std::f64::consts::FRAC_PI_2;
 
-use super::{Event, PState, PlasticEnd, Strip, StripSums, smooth_step};
+use super::{CS_MIN, Event, PState, PlasticEnd, Strip, StripSums, smooth_step};
 use rules::{blend, sin_cos_small};
 
 /// Largest variation of κ within an exponential step, bounded by
@@ -291,7 +291,21 @@ impl Strip {
         // ∝ h: times h they equal it up to rounding, and changed none of
         // the results or references of `cargo xtask ep-sets`).
         let (kr, ar) = self.rates::<ISO>(sn, cs, 1.0, 0.0, 1.0);
-        let ok = |h: f64, margin: f64| kr * h * (1.0 + KAPPA_H_SLACK) <= margin && ar * h <= a_h;
+        // With gy ≠ 1, the anisotropic term's part of the bound, f·|tan s|·h
+        // (see `rates`), at equal steps of h that end at the outlet: at the
+        // segment's start and at the last step's midpoint (cot(h/2) < 2/h;
+        // `rules::outlet_tan`), not at the outlet itself.
+        let (kr, kt) = if self.iso::<ISO>() {
+            (kr, 0.0)
+        } else {
+            let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
+            (kr - f * (1.0 / CS_MIN).min(rules::outlet_tan(sn, cs)), f)
+        };
+        let tan0 = sn.abs() / cs.max(CS_MIN);
+        let ok = |h: f64, margin: f64| {
+            let t = kt * (h * tan0).max((h / CS_MIN).min(2.0));
+            (kr * h + t) * (1.0 + KAPPA_H_SLACK) <= margin && ar * h <= a_h
+        };
         let mut nonstiff = ok(h, KAPPA_H);
         if nonstiff && etd_step > 0.0 {
             let nl = steps(LONG_FACTOR * s_step_smooth);

@@ -416,10 +416,12 @@ impl Strip {
         let mut kh = (2.0 / 3.0) * (a2 + vy0.abs().max(vy1.abs()).powi(2)).sqrt() * h;
         if !self.iso::<ISO>() {
             // The λ·t·G·n part of `theta_rate` relaxes θ too: bound its rate
-            // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s) (tan s largest at s1).
+            // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s) (tan s largest at s1;
+            // see `outlet_tan` for a step that ends near the outlet).
             let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
             kh *= 1.0 + f;
-            kh += (2.0 / 3.0) * f * 1.5 * sn1.abs() / cs1.max(CS_MIN) * h;
+            let tan1 = sn1.abs() / cs1.max(CS_MIN);
+            kh += f * tan1.min(outlet_tan(sn0, cs0)) * h;
         }
         // The slip direction v = (a, vy/gy) turns at
         // α' = a·(q2/gy)·c·cos s/(a² + (vy/gy)²).
@@ -523,4 +525,19 @@ pub(super) fn phi_functions(z: f64, e: f64) -> (f64, f64, f64) {
     let p2 = 0.5 + z * p3;
     let p1 = 1.0 + z * p2;
     (p1, p2, p3)
+}
+
+/// The largest tan s that the anisotropic term of a step's rate bound
+/// (`Strip::rates`) counts on a step from s0 = atan2(sn0, cs0): at least the
+/// tan at the midpoint of [s0, π/2], cot((π/2 − s0)/2) = (1 + sin s0)/cos s0
+/// (with |sin s0|, and capped like `theta_rate`), rather than at the outlet.
+/// The term λ·t·G·n with −dL/dX = (3/2)·tan s drives the direction towards
+/// the stiffer axis at a rate that grows without bound at the outlet, but a
+/// stage at the outlet moves only the end direction of the strip's last
+/// step, whose weight L·dX/ds vanishes there, and beyond the midpoint of
+/// what remains of the strip the weight (3/2)c²cos²s of the strip sums is
+/// below (3/2)c²·((π/2 − s0)/2)² (docs/decisions/0105).
+#[inline(always)]
+pub(super) fn outlet_tan(sn0: f64, cs0: f64) -> f64 {
+    (1.0 + sn0.abs()) / cs0.max(CS_MIN)
 }
