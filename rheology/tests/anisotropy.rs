@@ -151,9 +151,8 @@ fn large_j_with_anisotropy_meets_the_accuracy() {
     // quasi-steady branch was used where the flow is not quasi-steady; their
     // former errors are stated at the integrator's sub-step rule): gy = 8.7,
     // J ≈ 10 at 1e-3 and gy = 0.1, k = 0.05 at 1e-4, and 60 pseudo-random
-    // cases: k 0.05 … 20, gy 0.1 … 10, |ΔX| ≤ 0.3, |J| up to 10³ (an offline
-    // scan of 1500 such cases to 10⁴: worst error/tol in the crate README,
-    // anisotropic stiffness).
+    // cases: k 0.05 … 20, gy 0.1 … 10, |ΔX| ≤ 0.3, |J| up to 10³ (1500
+    // such cases to 10⁴: the ignored test `anisotropic_scan` below).
     let mut cases = vec![
         (0.5, -224.45, -11.92, -147.61, -0.2, 3.0),
         (2.0, 120.0, 40.0, 300.0, 0.0, 0.3),
@@ -187,5 +186,55 @@ fn large_j_with_anisotropy_meets_the_accuracy() {
             println!("k={k} J=({j1},{j2},{j3}) dX={dx} gy={gy} tol={tol:.0e}: {d:.1e}");
             assert!(d <= tol, "{o:?} vs {r:?}");
         }
+    }
+}
+
+#[test]
+#[ignore = "1500 anisotropic cases with |J| to 10⁴, about 40 s in release: \
+            cargo test -p traction-rheology --release --test anisotropy anisotropic_scan -- --ignored --nocapture"]
+fn anisotropic_scan() {
+    // k 0.05 … 20, gy 0.1 … 10 and |J| 1 … 10⁴ log-uniform, |ΔX| ≤ 0.3,
+    // against the same integrator at tol 1e-7 (as the test above, whose
+    // first and fifth case the independent grid scheme confirms).
+    let mut xs = XorShift64::new(0x5ca1_ab1e_0bad_cafe);
+    let mut rnd = || xs.unit();
+    let tols = [1e-3, 1e-4];
+    let mut worst = [(0.0f64, String::new()), (0.0f64, String::new())];
+    for _ in 0..1500 {
+        let k = 10f64.powf(-1.3 + 2.6 * rnd());
+        let gy = 10f64.powf(-1.0 + 2.0 * rnd());
+        let dx = 0.6 * rnd() - 0.3;
+        let r = 10f64.powf(4.0 * rnd());
+        let (a, b, c) = (2.0 * rnd() - 1.0, 2.0 * rnd() - 1.0, 2.0 * rnd() - 1.0);
+        let i = Inputs::with_offset(k, r * a, r * b, r * c, dx)
+            .unwrap()
+            .with_stiffness_ratio(gy)
+            .unwrap();
+        let reference = ep(&i, 1e-7);
+        for (w, tol) in worst.iter_mut().zip(tols) {
+            let o = ep(&i, tol);
+            let d = (o.j4 - reference.j4)
+                .abs()
+                .max((o.j5 - reference.j5).abs())
+                .max((o.j6 - reference.j6).abs())
+                / tol;
+            if d > w.0 {
+                *w = (
+                    d,
+                    format!(
+                        "k {k:.4} J ({:.4}, {:.4}, {:.4}) dX {dx:.3} gy {gy:.3}",
+                        r * a,
+                        r * b,
+                        r * c
+                    ),
+                );
+            }
+        }
+    }
+    for (w, tol) in worst.iter().zip(tols) {
+        println!("tol {tol:e}: worst error/tol {:.3} ({})", w.0, w.1);
+    }
+    for (d, case) in &worst {
+        assert!(*d <= 1.0, "{case}");
     }
 }
