@@ -128,6 +128,11 @@ const KAPPA_H_LONG: f64 = 0.75;
 /// The fixed-resolution reference (`Strip::integrate`) does not use it.
 const RK5_KAPPA_H_STIFF: f64 = 2.8;
 
+/// Sub-step counts of the bound over which the anisotropic relaxation rate
+/// at the step's directions (`Strip::aniso_rate`) takes over the count in
+/// `Strip::advance` (blended in between).
+const ANISO_SUB: (f64, f64) = (8.0, 10.0);
+
 /// RK4 margin on κ·h of the steps that `Strip::advance` takes whole on
 /// stiff segments (sub-steps beyond it). 1.5 rather than KAPPA_H: with the
 /// longer turn-limited steps of TURN_PER_STEP = 4 it keeps the worst
@@ -184,7 +189,20 @@ impl Strip {
         // as a real number; the quasi-steady branch from κ·h > MAX_SUB·
         // KAPPA_H.
         let mk = kh / KAPPA_H;
-        let mr = (kh / KAPPA_H_STIFF).max((ah / a_h).min(MAX_SUB_TURN));
+        let mut mr = (kh / KAPPA_H_STIFF).max((ah / a_h).min(MAX_SUB_TURN));
+        // With gy ≠ 1 the bound holds over every stress direction. Where it
+        // asks for more than ANISO_SUB.0 sub-steps, the relaxation rate at
+        // the directions the step can take sets their count instead
+        // (`Strip::aniso_sub_steps`). The quasi-steady switch keeps the
+        // bound.
+        if !self.iso::<ISO>() && mr > ANISO_SUB.0 {
+            mr = self.aniso_sub_steps(
+                p,
+                (s1, c1, h),
+                kh / KAPPA_H_STIFF,
+                (ah / a_h).min(MAX_SUB_TURN),
+            );
+        }
         // With gy ≠ 1 the bound on κ·h (see `rates`) can exceed the actual
         // relaxation rate of θ by up to f = 1 + |gy − 1|/min(1, gy), and the
         // quasi-steady direction is then wrong where the flow is not yet
@@ -211,6 +229,34 @@ impl Strip {
         }
         let rk = self.sub_steps::<ISO>(p, (h, c2, s2), mr);
         blend(&rk, &qs, smooth_step(t))
+    }
+
+    /// The sub-step count of an anisotropic step (see `advance`): where the
+    /// bound's count `mr_k` exceeds the turn's `mr_a`, the relaxation
+    /// rate at the directions the step can take (`Strip::aniso_rate`) sets
+    /// it, blended in from ANISO_SUB.0 to ANISO_SUB.1 sub-steps of the bound
+    /// (a C¹ step; below ANISO_SUB.0 the rate costs more than the sub-steps
+    /// it saves). Continuous in the inputs: the count only falls towards
+    /// the turn's, where that sets it.
+    #[cold]
+    #[inline(never)]
+    fn aniso_sub_steps(
+        &self,
+        p: &PState,
+        (s1, c1, h): (f64, f64, f64),
+        mr_k: f64,
+        mr_a: f64,
+    ) -> f64 {
+        let mr = mr_k.max(mr_a);
+        if mr_k <= mr_a || mr_k <= ANISO_SUB.0 {
+            return mr;
+        }
+        let act = self.aniso_rate(p, s1, c1, h) / KAPPA_H_STIFF;
+        if act >= mr_k {
+            return mr;
+        }
+        let w = smooth_step((mr_k - ANISO_SUB.0) / (ANISO_SUB.1 - ANISO_SUB.0));
+        (mr_k - w * (mr_k - act)).max(mr_a).max(1.0)
     }
 
     /// `p` advanced by h in RK4 sub-steps where the step needs mr > 1 of

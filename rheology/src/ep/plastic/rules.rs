@@ -12,6 +12,10 @@
 
 use super::super::{CS_MIN, PState, Strip, StripSums};
 
+/// Factor on the anisotropic relaxation rate at the step's directions
+/// (`Strip::aniso_rate`): the direction moves between them within a step.
+const ANISO_RATE_SAFETY: f64 = 1.25;
+
 /// (sin x, cos x) of a (half) step angle: Taylor polynomials for |x| ≤ 1/2,
 /// whose truncation error (< x¹⁷/17! ≈ 2e-20 for sin, x¹⁸/18! for cos) is
 /// far below the rounding of f64, so the result agrees with the library's
@@ -436,6 +440,53 @@ impl Strip {
         // num ≥ 0 and den ≥ 0: num/den is +∞ where den = 0 < num.
         let ah = if num == 0.0 { 0.0 } else { num / den };
         (kh, ah)
+    }
+
+    /// A bound of |∂θ'/∂θ|·h over a step from `p` to (sn1, cs1) for an
+    /// anisotropic stiffness, at the directions the step can take: the
+    /// step's start direction and the slip directions v̂ = (a, vy/gy)/|·| at
+    /// its ends (the quasi-steady attractor), times ANISO_RATE_SAFETY. With
+    /// E = e·n, P = t·e (scaled by 2/3) and H = nx·ny/(nx² + gy·ny²),
+    /// dθ/ds = P − (gy − 1)·H·(E + tan s), so
+    /// −∂θ'/∂θ = E + (gy − 1)·(H′·(E + tan s) + H·P); for a fixed direction
+    /// it is affine in vy and tan s, so its largest magnitude over the step
+    /// is at an end (tan s there capped by `outlet_tan`, as in `rates`).
+    #[inline(never)]
+    pub(super) fn aniso_rate(&self, p: &PState, sn1: f64, cs1: f64, h: f64) -> f64 {
+        let k = 2.0 / 3.0;
+        let a_k = k * self.a;
+        let g1 = self.gy - 1.0;
+        let ends = [
+            (k * self.vy(self.c * p.sn), p.sn / p.cs.max(CS_MIN)),
+            (
+                k * self.vy(self.c * sn1),
+                (sn1 / cs1.max(CS_MIN)).min(outlet_tan(p.sn, p.cs)),
+            ),
+        ];
+        let rate = |nx: f64, ny: f64| {
+            let nn = 1.0 / (nx * nx + self.gy * ny * ny);
+            let hh = nx * ny * nn;
+            let hp = ((nx * nx - ny * ny) - 2.0 * g1 * nx * ny * hh) * nn;
+            let mut m = 0.0f64;
+            for &(vy_k, t) in &ends {
+                let e = a_k * nx + vy_k * ny;
+                let pp = vy_k * nx - a_k * ny;
+                m = m.max((e + g1 * (hp * (e + t) + hh * pp)).abs());
+            }
+            m
+        };
+        let slip = |vy_k: f64| {
+            let (vx, vy) = (a_k, vy_k / self.gy);
+            let r = (vx * vx + vy * vy).sqrt();
+            if r > 0.0 {
+                (vx / r, vy / r)
+            } else {
+                (1.0, 0.0)
+            }
+        };
+        let (u0, u1) = (slip(ends[0].0), slip(ends[1].0));
+        let m = rate(p.nx, p.ny).max(rate(u0.0, u0.1)).max(rate(u1.0, u1.1));
+        ANISO_RATE_SAFETY * m * h
     }
 
     /// Quasi-steady direction over h (stiff limit), Simpson's rule.

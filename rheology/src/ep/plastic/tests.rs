@@ -487,3 +487,60 @@ fn g_rate_is_the_derivative_of_g_along_the_flow() {
         }
     }
 }
+
+/// `advance` with an anisotropic stiffness across the sub-step counts of
+/// the bound at which the relaxation rate at the step's directions takes
+/// over the count (`Strip::aniso_sub_steps`, blended from ANISO_SUB.0 to
+/// ANISO_SUB.1): continuous as across the isotropic thresholds above, and
+/// fewer sub-steps than the bound's beyond the blend.
+#[test]
+fn anisotropic_sub_step_counts_are_continuous() {
+    use super::{ANISO_SUB, KAPPA_H_STIFF, PState, StripSums};
+    // k = 1, J = (20, 30, 100), gy = 2, the strip at Y = 0.3 from s0 = 0.2,
+    // the direction 0.05 behind the slip direction (a, vy/gy).
+    let st = Scaled::new(1.0, 20.0, 30.0, 100.0, 0.0)
+        .with_gy(2.0)
+        .strip(0.3);
+    let (sn, cs) = 0.2f64.sin_cos();
+    let vy = st.b1 + st.q2 * st.c * sn;
+    let alpha = (vy / st.gy).atan2(st.a) - 0.05;
+    let p = PState {
+        sn,
+        cs,
+        nx: alpha.cos(),
+        ny: alpha.sin(),
+        acc: StripSums::default(),
+    };
+    let kh = |h: f64| {
+        let (s1, c1) = (0.2 + h).sin_cos();
+        st.rates::<false>(sn, cs, s1, c1, h).0
+    };
+    let go = |h: f64| {
+        let (s2, c2) = super::sin_cos_small(0.5 * h);
+        let q = st.advance::<false>(&p, h, c2, s2, f64::INFINITY, None);
+        [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
+    };
+    for target in [ANISO_SUB.0 * KAPPA_H_STIFF, ANISO_SUB.1 * KAPPA_H_STIFF] {
+        let (mut lo, mut hi) = (1e-4, 0.5);
+        assert!(kh(lo) < target && kh(hi) > target, "{target}");
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if kh(mid) < target { lo = mid } else { hi = mid }
+        }
+        // The rate at the step's directions is below the bound here, so
+        // that the blend changes the count (a hard switch at ANISO_SUB.0
+        // jumped by 1.8e-4 in n there, measured).
+        let (s1, c1) = (0.2 + lo).sin_cos();
+        assert!(st.aniso_rate(&p, s1, c1, lo) < 0.9 * kh(lo));
+        let d = 1e-8 * lo;
+        let v: Vec<[f64; 5]> = (0..6).map(|i| go(lo + (i as f64 - 2.5) * d)).collect();
+        for j in 0..5 {
+            let df: Vec<f64> = v.windows(2).map(|w| w[1][j] - w[0][j]).collect();
+            let across = df[2] - 0.5 * (df[1] + df[3]);
+            assert!(
+                across.abs() < 1e-12,
+                "κ·h = {target}, component {j}: {across:e} ({df:?})"
+            );
+        }
+    }
+}
