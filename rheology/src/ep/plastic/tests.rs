@@ -40,49 +40,66 @@ fn phi_functions_match_their_series() {
 /// blended in from κ·h = 16 to 18.
 #[test]
 fn advance_is_continuous_across_its_step_kinds() {
-    use super::{KAPPA_H, KAPPA_H_STIFF, MAX_SUB, PState, QS_BLEND, StripSums};
+    use super::{KAPPA_H, KAPPA_H_STIFF, MAX_SUB, QS_BLEND};
     // k = 0.07, J = (0.11, 1.93, −25), the strip at Y = 0.3 (q2 ≈ −357):
     // from s0 = 0.2, κ = (2/3)|v| grows from ≈ 41 along the step.
     let st = Scaled::new(0.07, 0.11, 1.93, -25.0, 0.0).strip(0.3);
-    let (sn, cs) = 0.2f64.sin_cos();
-    let vy = st.b1 + st.q2 * st.c * sn;
-    let alpha = vy.atan2(st.a) - 0.05;
-    let p = PState {
-        sn,
-        cs,
-        nx: alpha.cos(),
-        ny: alpha.sin(),
-        acc: StripSums::default(),
-    };
-    let kh = |h: f64| {
-        let (s1, c1) = (0.2 + h).sin_cos();
-        st.rates::<true>(sn, cs, s1, c1, h).0
-    };
-    let go = |h: f64| {
-        let (s2, c2) = super::sin_cos_small(0.5 * h);
-        let q = st.advance::<true>(&p, h, c2, s2, f64::INFINITY, None);
-        [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
-    };
     let qs = MAX_SUB as f64 * KAPPA_H;
     let mut thresholds: Vec<f64> = (1..)
         .map(|m| m as f64 * KAPPA_H_STIFF)
         .take_while(|&x| x < qs)
         .collect();
     thresholds.extend([qs, QS_BLEND * qs]);
-    for target in thresholds {
-        // h where the bound κ·h reaches the threshold (bisection).
+    // Equal sub-steps (⌈κ·h/2⌉ of them) and a switch to the quasi-steady
+    // step without the blend jumped by 4e-5…8e-3 in the strip sums and n
+    // there (measured, docs/decisions/0082).
+    assert_advance_continuous::<true>(&st, &thresholds, |_, _| {});
+}
+
+/// The plastic state at s = 0.2 on `st`, its direction 0.05 behind the slip
+/// direction (a, vy/gy).
+fn lagging_state(st: &super::Strip) -> super::PState {
+    let (sn, cs) = 0.2f64.sin_cos();
+    let vy = st.b1 + st.q2 * st.c * sn;
+    let alpha = (vy / st.gy).atan2(st.a) - 0.05;
+    super::PState {
+        sn,
+        cs,
+        nx: alpha.cos(),
+        ny: alpha.sin(),
+        acc: super::StripSums::default(),
+    }
+}
+
+/// `advance` from [`lagging_state`] over steps h around each threshold of
+/// the bound κ·h (`rates`; h found by bisection): six points 1e-8·h apart,
+/// the threshold between the third and the fourth. The difference across
+/// it must match those on either side to within the curvature (≈ 1e-16
+/// here) and round-off. `at` is called with the state and the step at each
+/// threshold (for checks of the case itself).
+fn assert_advance_continuous<const ISO: bool>(
+    st: &super::Strip,
+    thresholds: &[f64],
+    at: impl Fn(&super::PState, f64),
+) {
+    let p = lagging_state(st);
+    let kh = |h: f64| {
+        let (s1, c1) = (0.2 + h).sin_cos();
+        st.rates::<ISO>(p.sn, p.cs, s1, c1, h).0
+    };
+    let go = |h: f64| {
+        let (s2, c2) = super::sin_cos_small(0.5 * h);
+        let q = st.advance::<ISO>(&p, h, c2, s2, f64::INFINITY, None);
+        [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
+    };
+    for &target in thresholds {
         let (mut lo, mut hi) = (1e-4, 0.5);
         assert!(kh(lo) < target && kh(hi) > target, "{target}");
         for _ in 0..100 {
             let mid = 0.5 * (lo + hi);
             if kh(mid) < target { lo = mid } else { hi = mid }
         }
-        // Six points 1e-8·h apart, the threshold between the third and
-        // the fourth: the difference across it must match those on
-        // either side to within the curvature (≈ 1e-16 here) and
-        // round-off. Equal sub-steps (⌈κ·h/2⌉ of them) and a switch to
-        // the quasi-steady step without the blend jumped by 4e-5…8e-3
-        // in the strip sums and n there (measured, docs/decisions/0082).
+        at(&p, lo);
         let d = 1e-8 * lo;
         let v: Vec<[f64; 5]> = (0..6).map(|i| go(lo + (i as f64 - 2.5) * d)).collect();
         for j in 0..5 {
@@ -495,52 +512,18 @@ fn g_rate_is_the_derivative_of_g_along_the_flow() {
 /// fewer sub-steps than the bound's beyond the blend.
 #[test]
 fn anisotropic_sub_step_counts_are_continuous() {
-    use super::{ANISO_SUB, KAPPA_H_STIFF, PState, StripSums};
-    // k = 1, J = (20, 30, 100), gy = 2, the strip at Y = 0.3 from s0 = 0.2,
-    // the direction 0.05 behind the slip direction (a, vy/gy).
+    use super::{ANISO_SUB, KAPPA_H_STIFF};
+    // k = 1, J = (20, 30, 100), gy = 2, the strip at Y = 0.3.
     let st = Scaled::new(1.0, 20.0, 30.0, 100.0, 0.0)
         .with_gy(2.0)
         .strip(0.3);
-    let (sn, cs) = 0.2f64.sin_cos();
-    let vy = st.b1 + st.q2 * st.c * sn;
-    let alpha = (vy / st.gy).atan2(st.a) - 0.05;
-    let p = PState {
-        sn,
-        cs,
-        nx: alpha.cos(),
-        ny: alpha.sin(),
-        acc: StripSums::default(),
-    };
-    let kh = |h: f64| {
+    let thresholds = [ANISO_SUB.0 * KAPPA_H_STIFF, ANISO_SUB.1 * KAPPA_H_STIFF];
+    // The rate at the step's directions is below the bound there, so that
+    // the blend changes the count (a hard switch at ANISO_SUB.0 jumped by
+    // 1.8e-4 in n there, measured).
+    assert_advance_continuous::<false>(&st, &thresholds, |p, h| {
         let (s1, c1) = (0.2 + h).sin_cos();
-        st.rates::<false>(sn, cs, s1, c1, h).0
-    };
-    let go = |h: f64| {
-        let (s2, c2) = super::sin_cos_small(0.5 * h);
-        let q = st.advance::<false>(&p, h, c2, s2, f64::INFINITY, None);
-        [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
-    };
-    for target in [ANISO_SUB.0 * KAPPA_H_STIFF, ANISO_SUB.1 * KAPPA_H_STIFF] {
-        let (mut lo, mut hi) = (1e-4, 0.5);
-        assert!(kh(lo) < target && kh(hi) > target, "{target}");
-        for _ in 0..100 {
-            let mid = 0.5 * (lo + hi);
-            if kh(mid) < target { lo = mid } else { hi = mid }
-        }
-        // The rate at the step's directions is below the bound here, so
-        // that the blend changes the count (a hard switch at ANISO_SUB.0
-        // jumped by 1.8e-4 in n there, measured).
-        let (s1, c1) = (0.2 + lo).sin_cos();
-        assert!(st.aniso_rate(&p, s1, c1, lo) < 0.9 * kh(lo));
-        let d = 1e-8 * lo;
-        let v: Vec<[f64; 5]> = (0..6).map(|i| go(lo + (i as f64 - 2.5) * d)).collect();
-        for j in 0..5 {
-            let df: Vec<f64> = v.windows(2).map(|w| w[1][j] - w[0][j]).collect();
-            let across = df[2] - 0.5 * (df[1] + df[3]);
-            assert!(
-                across.abs() < 1e-12,
-                "κ·h = {target}, component {j}: {across:e} ({df:?})"
-            );
-        }
-    }
+        let bound = st.rates::<false>(p.sn, p.cs, s1, c1, h).0;
+        assert!(st.aniso_rate(p, s1, c1, h) < 0.9 * bound);
+    });
 }
