@@ -196,18 +196,12 @@ fn large_j_with_anisotropy_meets_the_accuracy() {
     }
 }
 
-#[test]
-#[ignore = "1500 anisotropic cases with |J| to 10⁴, about 40 s in release: \
-            cargo test -p traction-rheology --release --test anisotropy anisotropic_scan -- --ignored --nocapture"]
-fn anisotropic_scan() {
-    // k 0.05 … 20, gy 0.1 … 10 and |J| 1 … 10⁴ log-uniform, |ΔX| ≤ 0.3,
-    // against the same integrator at tol 1e-7 (as the test above, whose
-    // first and fifth case the independent grid scheme confirms).
-    let mut xs = XorShift64::new(0x5ca1_ab1e_0bad_cafe);
+/// Worst error/tol of `evaluate` at tol 1e-3 and 1e-4 against tol 1e-7 over
+/// `cases` (k, J1, J2, J3, ΔX, gy), with the worst case of each; printed.
+fn worst_against_tight(cases: impl Iterator<Item = (f64, f64, f64, f64, f64, f64)>) -> [f64; 2] {
     let tols = [1e-3, 1e-4];
     let mut worst = [(0.0f64, String::new()), (0.0f64, String::new())];
-    for _ in 0..1500 {
-        let (k, j1, j2, j3, dx, gy) = random_case(&mut xs, 4.0);
+    for (k, j1, j2, j3, dx, gy) in cases {
         let i = Inputs::with_offset(k, j1, j2, j3, dx)
             .unwrap()
             .with_stiffness_ratio(gy)
@@ -231,7 +225,37 @@ fn anisotropic_scan() {
     for (w, tol) in worst.iter().zip(tols) {
         println!("tol {tol:e}: worst error/tol {:.3} ({})", w.0, w.1);
     }
-    for (d, case) in &worst {
-        assert!(*d <= 1.0, "{case}");
-    }
+    worst.map(|w| w.0)
+}
+
+#[test]
+#[ignore = "1500 anisotropic cases with |J| to 10⁴, about 40 s in release: \
+            cargo test -p traction-rheology --release --test anisotropy scan -- --ignored --nocapture"]
+fn anisotropic_scan() {
+    // k 0.05 … 20, gy 0.1 … 10 and |J| 1 … 10⁴ log-uniform, |ΔX| ≤ 0.3,
+    // against the same integrator at tol 1e-7 (as the test above, whose
+    // first and fifth case the independent grid scheme confirms). Measured
+    // 0.30 / 0.31 at tol 1e-3 / 1e-4.
+    let mut xs = XorShift64::new(0x5ca1_ab1e_0bad_cafe);
+    let worst = worst_against_tight((0..1500).map(|_| random_case(&mut xs, 4.0)));
+    assert!(worst.iter().all(|&w| w <= 1.0), "{worst:?}");
+}
+
+#[test]
+#[ignore = "1500 nearly isotropic cases (gy 0.85–1.15), a few seconds in release: \
+            cargo test -p traction-rheology --release --test anisotropy scan -- --ignored --nocapture"]
+fn near_isotropic_scan() {
+    // The stiffness ratios that the disc compliance gives (gy near 1),
+    // where anisotropic variants of the isotropic solver's steps are
+    // tempting: k 0.05 … 20, |J| 1 … 10^2.5 log-uniform, |ΔX| ≤ 0.3, gy
+    // uniform in 0.85 … 1.15, against tol 1e-7. Measured 0.17 / 0.40 at tol
+    // 1e-3 / 1e-4 (exponential steps with the anisotropic remainder
+    // explicit: 0.39 with gy within 0.05 of 1, 1.0 within 0.12;
+    // docs/decisions/0107).
+    let mut xs = XorShift64::new(0x1234_5678_9abc_def1);
+    let worst = worst_against_tight((0..1500).map(|_| {
+        let (k, j1, j2, j3, dx, _) = random_case(&mut xs, 2.5);
+        (k, j1, j2, j3, dx, 0.85 + 0.3 * xs.unit())
+    }));
+    assert!(worst.iter().all(|&w| w <= 1.0), "{worst:?}");
 }
