@@ -508,8 +508,9 @@ fn g_rate_is_the_derivative_of_g_along_the_flow() {
 /// `advance` with an anisotropic stiffness across the sub-step counts of
 /// the bound at which the relaxation rate at the step's directions takes
 /// over the count (`Strip::aniso_sub_steps`, blended from ANISO_SUB.0 to
-/// ANISO_SUB.1): continuous as across the isotropic thresholds above, and
-/// fewer sub-steps than the bound's beyond the blend.
+/// ANISO_SUB.1): continuous as across the isotropic thresholds above, on
+/// a step where that rate is below the bound (so that the blend changes
+/// the count).
 #[test]
 fn anisotropic_sub_step_counts_are_continuous() {
     use super::{ANISO_SUB, KAPPA_H_STIFF};
