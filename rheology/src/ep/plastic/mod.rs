@@ -189,19 +189,15 @@ impl Strip {
         // as a real number; the quasi-steady branch from κ·h > MAX_SUB·
         // KAPPA_H.
         let mk = kh / KAPPA_H;
-        let mut mr = (kh / KAPPA_H_STIFF).max((ah / a_h).min(MAX_SUB_TURN));
+        let (mr_k, mr_a) = (kh / KAPPA_H_STIFF, (ah / a_h).min(MAX_SUB_TURN));
+        let mut mr = mr_k.max(mr_a);
         // With gy ≠ 1 the bound holds over every stress direction. Where it
         // asks for more than ANISO_SUB.0 sub-steps, the relaxation rate at
         // the directions the step can take sets their count instead
         // (`Strip::aniso_sub_steps`). The quasi-steady switch keeps the
         // bound.
         if !self.iso::<ISO>() && mr > ANISO_SUB.0 {
-            mr = self.aniso_sub_steps(
-                p,
-                (s1, c1, h),
-                kh / KAPPA_H_STIFF,
-                (ah / a_h).min(MAX_SUB_TURN),
-            );
+            mr = self.aniso_sub_steps(p, (s1, c1, h), mr_k, mr_a);
         }
         // With gy ≠ 1 the bound on κ·h (see `rates`) can exceed the actual
         // relaxation rate of θ by up to f = 1 + |gy − 1|/min(1, gy), and the
@@ -214,7 +210,7 @@ impl Strip {
         let max_sub = if self.iso::<ISO>() {
             MAX_SUB as f64
         } else {
-            4.0 * MAX_SUB_ANISO as f64 * (1.0 + (self.gy - 1.0).abs() / self.gy.min(1.0))
+            4.0 * MAX_SUB_ANISO as f64 * (1.0 + self.aniso_f())
         };
         if mk <= max_sub {
             return self.sub_steps::<ISO>(p, (h, c2, s2), mr);
@@ -336,16 +332,15 @@ impl Strip {
         // The segment's bounds per unit step (`rates` over the segment is
         // ∝ h: times h they equal it up to rounding, and changed none of
         // the results or references of `cargo xtask ep-sets`).
-        let (kr, ar) = self.rates::<ISO>(sn, cs, 1.0, 0.0, 1.0);
+        let (kr, ar) = self.rates_but_tan::<ISO>(sn, cs, 1.0, 0.0, 1.0);
         // With gy ≠ 1, the anisotropic term's part of the bound, f·|tan s|·h
         // (see `rates`), at equal steps of h that end at the outlet: at the
         // segment's start and at the last step's midpoint (cot(h/2) < 2/h;
         // `rules::outlet_tan`), not at the outlet itself.
-        let (kr, kt) = if self.iso::<ISO>() {
-            (kr, 0.0)
+        let kt = if self.iso::<ISO>() {
+            0.0
         } else {
-            let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
-            (kr - f * (1.0 / CS_MIN).min(rules::outlet_tan(sn, cs)), f)
+            self.aniso_f()
         };
         let tan0 = sn.abs() / cs.max(CS_MIN);
         let ok = |h: f64, margin: f64| {

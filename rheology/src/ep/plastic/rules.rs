@@ -415,17 +415,41 @@ impl Strip {
         cs1: f64,
         h: f64,
     ) -> (f64, f64) {
+        let (kh, ah) = self.rates_but_tan::<ISO>(sn0, cs0, sn1, cs1, h);
+        if self.iso::<ISO>() {
+            return (kh, ah);
+        }
+        // The (3/2)·tan s part of the anisotropic bound (tan s largest at
+        // s1; see `outlet_tan` for a step that ends near the outlet).
+        let tan1 = sn1.abs() / cs1.max(CS_MIN);
+        (kh + self.aniso_f() * tan1.min(outlet_tan(sn0, cs0)) * h, ah)
+    }
+
+    /// |gy − 1|/min(1, gy): the anisotropic part of the stiffness bound,
+    /// relative to the isotropic rate (`rates`).
+    #[inline(always)]
+    pub(super) fn aniso_f(&self) -> f64 {
+        (self.gy - 1.0).abs() / self.gy.min(1.0)
+    }
+
+    /// [`Strip::rates`] without the anisotropic bound's tan s term, which
+    /// the caller adds (a whole segment counts it at its own nodes).
+    #[inline]
+    pub(super) fn rates_but_tan<const ISO: bool>(
+        &self,
+        sn0: f64,
+        cs0: f64,
+        sn1: f64,
+        cs1: f64,
+        h: f64,
+    ) -> (f64, f64) {
         let (vy0, vy1) = (self.vy(self.c * sn0), self.vy(self.c * sn1));
         let a2 = self.a * self.a;
         let mut kh = (2.0 / 3.0) * (a2 + vy0.abs().max(vy1.abs()).powi(2)).sqrt() * h;
         if !self.iso::<ISO>() {
             // The λ·t·G·n part of `theta_rate` relaxes θ too: bound its rate
-            // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s) (tan s largest at s1;
-            // see `outlet_tan` for a step that ends near the outlet).
-            let f = (self.gy - 1.0).abs() / self.gy.min(1.0);
-            kh *= 1.0 + f;
-            let tan1 = sn1.abs() / cs1.max(CS_MIN);
-            kh += f * tan1.min(outlet_tan(sn0, cs0)) * h;
+            // by |gy − 1|/min(1, gy)·(|e| + (3/2)tan s); here the |e| part.
+            kh *= 1.0 + self.aniso_f();
         }
         // The slip direction v = (a, vy/gy) turns at
         // α' = a·(q2/gy)·c·cos s/(a² + (vy/gy)²).
