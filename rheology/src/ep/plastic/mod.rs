@@ -71,6 +71,12 @@ const MAX_SUB_ANISO: usize = 16;
 /// −17/−12/−15/−20 %, but 0.61·tol at 1e-4 on 4 of the fresh seeds (0.47
 /// before), 6: 0.64·tol on the 16.
 const TURN_PER_STEP: f64 = 4.0;
+/// Newton iterations of `Strip::turn_bound_step`.
+const TURN_BOUND_NEWTON: usize = 4;
+/// Longest step of `Strip::turn_bound_step` relative to the distance from
+/// the crossing of vy = 0 (docs/decisions/0108: 0.5 and 1 took 3–20 %
+/// fewer plastic steps at |J3| = 1e4…1e6, for less margin).
+const TURN_BOUND_DISTANCE: f64 = 0.25;
 /// Largest number of sub-steps per step for the turn of the slip direction.
 const MAX_SUB_TURN: f64 = 256.0;
 /// Largest κ·h of a step that is limited by the exact turn of the slip
@@ -463,6 +469,14 @@ impl Strip {
                     };
                     let (b0, b1) = TURN_EXACT_BLEND;
                     let x = kh * (hx / hv);
+                    // Where the bound's step enters, not shorter than the
+                    // bound over its own span (`turn_bound_step`; with the
+                    // exact turn, in `evaluate`), which is at most hx.
+                    let hb = if x > b0 && !turn_t.is_nan() {
+                        hb.max(self.turn_bound_step(&p, a_h, hb).min(hx))
+                    } else {
+                        hb
+                    };
                     if hx > hb && x < b1 {
                         let w = 1.0 - smooth_step((x - b0) / (b1 - b0));
                         hv = hb + w * (hx - hb);
@@ -507,6 +521,62 @@ impl Strip {
         }
         *acc += p.acc;
         PlasticEnd::Outlet
+    }
+
+    /// A longer step than `hb`, the bound's step of `plastic`, towards the
+    /// crossing of vy = 0 (0 where there is none). Over the whole s-step
+    /// the bound is the rate at the crossing, and its step lets the steps
+    /// creep towards it in equal short pieces although the rate over each
+    /// of them is far smaller (docs/decisions/0108). This step is the
+    /// longest over which the same bound (the largest rate of the slip
+    /// direction over the step, with cos s ≤ 1, times the step) is `a_h`,
+    /// but no longer than TURN_BOUND_DISTANCE times the distance from the
+    /// crossing in s, counted with the turn's width w = |a·gy/q2|/(c·cos s_x)
+    /// (s_x the crossing's s), since the rate's higher derivatives grow
+    /// like powers of 1/that distance. With A = |a·q2·c|/gy and vm the
+    /// smallest |vy|/gy over the step, G(h) = h·A − a_h·(a² + vm²) is
+    /// increasing and, near the crossing, concave, so Newton's iterates
+    /// from h = 0 approach its root from below (TURN_BOUND_NEWTON of them:
+    /// measured 0–6 % short of it on the large-|J| cases of the crate
+    /// README, |J3| = 1e4…1e6); a fixed number of them keeps the step
+    /// continuous in the inputs. Receding from the crossing the bound's step is that of the
+    /// step's start already (0 is returned), and where the cap is not above
+    /// `hb` neither is the step (0 too).
+    #[inline(never)]
+    fn turn_bound_step(&self, p: &PState, a_h: f64, hb: f64) -> f64 {
+        let (a, q2) = (self.a, self.q2 / self.gy);
+        let vy0 = self.vy(self.c * p.sn) / self.gy;
+        if vy0 * q2 >= 0.0 {
+            return 0.0;
+        }
+        let x0 = -self.b1 / self.q2;
+        let sc = (x0 / self.c).clamp(-1.0, 1.0).asin();
+        let w = (a / (q2 * self.c * sc.cos().max(CS_MIN))).abs();
+        let cap = TURN_BOUND_DISTANCE * (sc - p.sn.asin()).hypot(w);
+        if cap <= hb {
+            return 0.0;
+        }
+        let big_a = (a * q2 * self.c).abs();
+        let a2 = a * a;
+        let mut h = 0.0;
+        for _ in 0..TURN_BOUND_NEWTON {
+            let (sh, ch) = sin_cos_small(h);
+            let sn1 = p.sn * ch + p.cs * sh;
+            let cs1 = p.cs * ch - p.sn * sh;
+            let vy1 = self.vy(self.c * sn1) / self.gy;
+            // The step holds the crossing where vy changes sign (vm = 0).
+            let (vm, dvm2) = if (vy0 < 0.0) != (vy1 < 0.0) {
+                (0.0, 0.0)
+            } else {
+                (vy1, 2.0 * vy1 * q2 * self.c * cs1)
+            };
+            let g = h * big_a - a_h * (a2 + vm * vm);
+            let dg = big_a - a_h * dvm2;
+            h -= g / dg;
+        }
+        // (A NaN iterate, which the bounds above exclude, would keep `hb`.)
+        let h = if h.is_nan() { 0.0 } else { h.min(cap) };
+        if h > 0.0 { h } else { 0.0 }
     }
 
     /// The step from `p` over which the slip direction v = (a, vy/gy)
