@@ -144,6 +144,7 @@
 #![forbid(unsafe_code)]
 
 pub mod closed;
+mod counts;
 mod ep;
 pub mod field;
 pub mod map;
@@ -153,6 +154,8 @@ pub mod reference;
 mod rigid;
 mod visco;
 
+#[cfg(feature = "step-counts")]
+pub use counts::{StepCounts, reset_step_counts, step_counts};
 pub use ep::Resolution;
 pub use field::{PointState, StressField, stress_field};
 pub use props::{Limit, Modulus, Properties};

@@ -30,9 +30,11 @@ mod prof_visco;
 
 const USAGE: &str = "usage: cargo xtask COMMAND ARGS
 commands:
-  prof [CASE [TOL [REPS [GY]]]]   callgrind driver: CASE m h p s a b c (bench set, prof.rs),
-                                  TOL accuracy (default 1e-3), REPS evaluations (default 1),
-                                  GY stiffness ratio gy (default 1)
+  prof [CASE [TOL [REPS [GY]]]]   callgrind driver: CASE m h p s a b c (bench set, prof.rs)
+                                  or k,J1,J2,J3, TOL accuracy (default 1e-3), REPS
+                                  evaluations (default 1), GY stiffness ratio gy (default 1);
+                                  built with --features step-counts also the strips and
+                                  plastic steps by kind per evaluation
   prof-visco [CASE [TOL [REPS [old|gauss]]]]
                                   the same for the viscoelastic model: CASE m h x l e g
                                   (prof_visco.rs); `old` = the former fixed-grid scheme,

@@ -361,6 +361,7 @@ impl Strip {
         steps: (f64, f64, f64, bool),
         rec: &mut impl FnMut(Event),
     ) -> (StripSums, u32) {
+        crate::counts::count!(strips);
         let c = self.c;
         let mut acc = StripSums::default();
         if c <= 0.0 {

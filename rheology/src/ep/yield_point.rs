@@ -58,6 +58,7 @@ impl Strip {
     /// old threshold c·(1 − 1e-15) at random, and the strip's flow topology,
     /// which gates the panels' accuracy test, with it (docs/decisions/0089).
     pub(super) fn find_yield(&self, x0: f64, z0: (f64, f64), s_step: f64) -> f64 {
+        crate::counts::count!(yield_searches);
         let c = self.c;
         let span = c - x0;
         if span <= 0.0 {

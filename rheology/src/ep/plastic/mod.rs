@@ -184,6 +184,7 @@ impl Strip {
     ) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
+        crate::counts::count!(stiff_steps);
         let (kh, ah) = match rates {
             Some(r) => r,
             None => self.rates::<ISO>(p.sn, p.cs, s1, c1, h),
@@ -296,9 +297,11 @@ impl Strip {
             for _ in 0..n as usize {
                 (s2r, c2r) = (s2r * c2s - c2r * s2s, c2r * c2s + s2r * s2s);
             }
+            crate::counts::count!(rk4_sub_steps);
             q = self.rk4::<ISO>(&q, r, c2r, s2r);
         }
         for _ in 0..n as usize {
+            crate::counts::count!(rk4_sub_steps);
             q = self.rk4::<ISO>(&q, hs, c2s, s2s);
         }
         q

@@ -90,6 +90,7 @@ impl Strip {
     /// midpoint stages share their node quantities.
     #[inline(always)]
     pub(super) fn rk4<const ISO: bool>(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+        crate::counts::count!(rk4);
         let c = self.c;
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
@@ -157,6 +158,7 @@ impl Strip {
     /// interval at κ·h = 3.39 (RK4: 2.79).
     #[inline(always)]
     pub(super) fn rk5<const ISO: bool>(&self, p: &PState, h: f64, c4: f64, s4: f64) -> PState {
+        crate::counts::count!(rk5);
         // Written stage by stage, each stage's contributions to the later
         // stages, the new direction and the strip sums accumulated as soon
         // as it is known (fewer live values).
@@ -254,6 +256,7 @@ impl Strip {
     /// h⁷/2016000·|(X·w)⁽⁶⁾|, 140 times less there).
     #[inline(never)]
     pub(super) fn etd(&self, p: &PState, h: f64, c2: f64, s2: f64) -> Option<PState> {
+        crate::counts::count!(exponential);
         let c = self.c;
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
@@ -515,6 +518,7 @@ impl Strip {
 
     /// Quasi-steady direction over h (stiff limit), Simpson's rule.
     pub(super) fn quasi_steady(&self, p: &PState, h: f64, c2: f64, s2: f64) -> PState {
+        crate::counts::count!(quasi_steady);
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
         let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
         // Quasi-steady branch, Simpson's rule.

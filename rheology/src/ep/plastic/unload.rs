@@ -76,6 +76,7 @@ impl Strip {
         g1: f64,
         a_h: f64,
     ) -> PState {
+        crate::counts::count!(unloadings);
         let g0 = self.g::<VIS>(p.sn, p.cs, p.nx, p.ny).max(0.0);
         let (mut tl, mut gl, mut th, mut gh) = (0.0, g0, h, g1);
         let mut best = *p;

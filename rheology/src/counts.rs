@@ -1,0 +1,126 @@
+//! Step counts of the elastic/plastic strip integrator (feature
+//! `step-counts`, for profiling; off by default, when the counting
+//! compiles to nothing).
+//!
+//! Each thread counts the strips it integrates and the steps of their
+//! plastic segments by kind, so that a cost can be split into strips ×
+//! steps per strip and the steps by the rule that takes them. The
+//! viscoelastic model's isotropic caps run on the same plastic stepping and
+//! are counted with it (its own Rosenbrock steps are not).
+//! The profiling driver `xtask prof`, built with `--features step-counts`,
+//! prints them per evaluation (docs/DEVELOPING.md).
+
+#[cfg(feature = "step-counts")]
+use std::cell::Cell;
+
+/// Counts since the thread started or since [`reset_step_counts`].
+#[cfg(feature = "step-counts")]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct StepCounts {
+    /// Strips integrated by the elastic/plastic strip integrator (the
+    /// rigid/plastic model's are not counted).
+    pub strips: u64,
+    /// Yield (or reloading) points searched on elastic segments.
+    pub yield_searches: u64,
+    /// Steps of the stiff segments' loop (`Strip::advance`): one RK4 step,
+    /// RK4 sub-steps, or the quasi-steady step.
+    pub stiff_steps: u64,
+    /// Classical RK4 steps, sub-steps included.
+    pub rk4: u64,
+    /// Of them, the sub-steps of stiff or turn-limited steps.
+    pub rk4_sub_steps: u64,
+    /// Steps of the six-stage fifth-order rule.
+    pub rk5: u64,
+    /// Exponential (ETDRK4) steps tried (where one does not apply, the RK4
+    /// steps that replace it are counted too).
+    pub exponential: u64,
+    /// Quasi-steady steps (those blended with sub-steps included).
+    pub quasi_steady: u64,
+    /// Unloading points located inside a step.
+    pub unloadings: u64,
+}
+
+#[cfg(feature = "step-counts")]
+thread_local! {
+    static COUNTS: Cell<StepCounts> = const {
+        Cell::new(StepCounts {
+            strips: 0,
+            yield_searches: 0,
+            stiff_steps: 0,
+            rk4: 0,
+            rk4_sub_steps: 0,
+            rk5: 0,
+            exponential: 0,
+            quasi_steady: 0,
+            unloadings: 0,
+        })
+    };
+}
+
+/// This thread's counts.
+#[cfg(feature = "step-counts")]
+pub fn step_counts() -> StepCounts {
+    COUNTS.with(Cell::get)
+}
+
+/// Sets this thread's counts to zero.
+#[cfg(feature = "step-counts")]
+pub fn reset_step_counts() {
+    COUNTS.with(|c| c.set(StepCounts::default()));
+}
+
+/// Adds one to a count of this thread.
+#[cfg(feature = "step-counts")]
+#[inline(always)]
+pub(crate) fn bump(f: impl FnOnce(&mut StepCounts)) {
+    COUNTS.with(|c| {
+        let mut v = c.get();
+        f(&mut v);
+        c.set(v);
+    });
+}
+
+/// Counts one event (`count!(rk4)`): nothing without the feature
+/// `step-counts`.
+macro_rules! count {
+    ($field:ident) => {
+        #[cfg(feature = "step-counts")]
+        $crate::counts::bump(|c| c.$field += 1);
+    };
+}
+pub(crate) use count;
+
+#[cfg(all(test, feature = "step-counts"))]
+mod tests {
+    use super::*;
+    use crate::{Inputs, Resolution, reference};
+
+    #[test]
+    fn counts_the_strips_and_steps_of_the_fixed_resolution_reference() {
+        // The fixed-resolution reference integrates exactly panels × points
+        // strips (3 × 4 = 12); case a of the bench set (k = 0.5,
+        // J = (2, −1, 10)) has plastic segments on them, stiff ones among
+        // them. The counts start from zero after a reset and the sub-steps
+        // are part of the RK4 steps.
+        reset_step_counts();
+        assert_eq!(step_counts(), StepCounts::default());
+        let inp = Inputs::new(0.5, 2.0, -1.0, 10.0).unwrap();
+        let res = Resolution {
+            y_panels: 3,
+            y_points: 4,
+            s_step: 0.1,
+        };
+        reference::elastic_plastic(&inp, &res).unwrap();
+        let c = step_counts();
+        assert_eq!(c.strips, 12, "{c:?}");
+        assert!(
+            c.yield_searches >= 12 && c.rk4 > 12 && c.stiff_steps > 0,
+            "{c:?}"
+        );
+        assert!(c.rk4_sub_steps <= c.rk4, "{c:?}");
+        // No exponential or fifth-order steps in the reference.
+        assert_eq!((c.exponential, c.rk5), (0, 0), "{c:?}");
+        reset_step_counts();
+        assert_eq!(step_counts(), StepCounts::default());
+    }
+}
