@@ -358,7 +358,11 @@ impl Strip {
         let x = self.c * sn;
         // The stiff limit follows the slip velocity v = (a, vy/gy).
         let (vx, vy) = (self.a, self.vy(x) / self.gy);
-        let m = vx.hypot(vy);
+        // |v| by the square root of the sum of squares (hypot's scaling is
+        // needed only where the squares leave the float range: |J| < 1e12
+        // here, J_RIGID, so only for |v| < 1e-150).
+        let m2 = vx * vx + vy * vy;
+        let m = if m2 > 1e-300 { m2.sqrt() } else { vx.hypot(vy) };
         if m == 0.0 || !m.is_finite() {
             return if m.is_finite() {
                 (1.0, 0.0)
