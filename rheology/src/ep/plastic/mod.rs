@@ -542,9 +542,9 @@ impl Strip {
     /// from h = 0 approach its root from below (TURN_BOUND_NEWTON of them:
     /// measured 0–6 % short of it on the large-|J| cases of the crate
     /// README, |J3| = 1e4…1e6); a fixed number of them keeps the step
-    /// continuous in the inputs. Receding from the crossing the bound's step is that of the
-    /// step's start already (0 is returned), and where the cap is not above
-    /// `hb` neither is the step (0 too).
+    /// continuous in the inputs. Receding from the crossing the bound's step
+    /// is that of the step's start already (0 is returned), and where the
+    /// cap is not above `hb` neither is the step (0 too).
     #[inline(never)]
     fn turn_bound_step(&self, p: &PState, a_h: f64, hb: f64) -> f64 {
         let (a, q2) = (self.a, self.q2 / self.gy);
@@ -577,9 +577,8 @@ impl Strip {
             let dg = big_a - a_h * dvm2;
             h -= g / dg;
         }
-        // (A NaN iterate, which the bounds above exclude, would keep `hb`.)
-        let h = if h.is_nan() { 0.0 } else { h.min(cap) };
-        if h > 0.0 { h } else { 0.0 }
+        // (A NaN iterate, which the bounds above exclude, keeps `hb`.)
+        if h > 0.0 { h.min(cap) } else { 0.0 }
     }
 
     /// The step from `p` over which the slip direction v = (a, vy/gy)
