@@ -537,10 +537,15 @@ impl TractionContact {
         } else {
             None
         };
-        let rev = if w < 1.0 {
-            Some(self.branch(k, frame(-1.0), gy, accuracy)?)
-        } else {
-            None
+        // Without slip and side slip the two frames coincide (pure spin
+        // below the floor): the reversed branch is the forward one.
+        let rev = match fwd {
+            Some(f) if w < 1.0 && rate[0] == 0.0 && rate[1] == 0.0 => Some(Branch {
+                j: frame(-1.0),
+                out: f.out,
+            }),
+            _ if w < 1.0 => Some(self.branch(k, frame(-1.0), gy, accuracy)?),
+            _ => None,
         };
         // Lab-frame dimensionless forces: (σ J4_σ, σ J5_σ, J6_σ), blended.
         let mut lab = [0.0; 3];
