@@ -71,6 +71,8 @@
 //!   the inlet is (the sign of J3 in the rolling frame), so without the blend the
 //!   forces would jump at U = 0 whenever there is spin. The blend is C¹ in U,
 //!   exact (w ∈ {0, 1}) for |U| ≥ U_f, and dissipative (each branch is).
+//!   Without slip and side slip (pure spin) the two frames have the same J's,
+//!   and the solution is evaluated once.
 //!
 //! # Regime (App. IV figure 14, regions I–III)
 //!
