@@ -537,13 +537,23 @@ impl TractionContact {
         } else {
             None
         };
-        // Without slip and side slip the two frames coincide (pure spin
-        // below the floor): the reversed branch is the forward one.
+        // Below the floor the reversed frame (−J1, −J2, J3) is taken from
+        // (J1, −J2, J3): the models are odd in the slips (Z → −Z) and
+        // symmetric about the rolling direction (Y → −Y), so its (J4, J5, J6)
+        // are (−J4, J5, J6) there. Without side slip that is the forward
+        // frame itself, evaluated once.
         let rev = match fwd {
-            Some(f) if w < 1.0 && rate[0] == 0.0 && rate[1] == 0.0 => Some(Branch {
-                j: frame(-1.0),
-                out: f.out,
-            }),
+            Some(f) if w < 1.0 => {
+                let b = if rate[1] == 0.0 {
+                    f
+                } else {
+                    self.branch(k, [rate[0], -rate[1], rate[2]], gy, accuracy)?
+                };
+                Some(Branch {
+                    j: frame(-1.0),
+                    out: [-b.out[0], b.out[1], b.out[2]],
+                })
+            }
             _ if w < 1.0 => Some(self.branch(k, frame(-1.0), gy, accuracy)?),
             _ => None,
         };

@@ -71,8 +71,11 @@
 //!   the inlet is (the sign of J3 in the rolling frame), so without the blend the
 //!   forces would jump at U = 0 whenever there is spin. The blend is C¹ in U,
 //!   exact (w ∈ {0, 1}) for |U| ≥ U_f, and dissipative (each branch is).
-//!   Without slip and side slip (pure spin) the two frames have the same J's,
-//!   and the solution is evaluated once.
+//!   Below the floor the reversed frame (−J1, −J2, J3) is taken from
+//!   (J1, −J2, J3) by the models' symmetries (odd in the slips, symmetric
+//!   about the rolling direction), whose (J4, J5, J6) it is as (−J4, J5, J6).
+//!   Without side slip that is the forward frame, so the J+T model is
+//!   evaluated once.
 //!
 //! # Regime (App. IV figure 14, regions I–III)
 //!

@@ -134,6 +134,52 @@ fn symmetries() {
 }
 
 #[test]
+fn reversed_rolling_frame_from_the_mirrored_slips() {
+    // Both symmetries above together: (−J1, −J2, J3) gives (−J4, J5, J6) of
+    // (J1, −J2, J3), for every model, stiffness ratio and offset. The
+    // contact takes its reversed rolling frame below the rolling-speed
+    // floor from it (the forward frame itself without side slip), and
+    // evaluates that frame directly from −U_f on, so a defect would be a jump
+    // in its forces there. The same discretisation of mirrored strips: 1e-12.
+    let a = Accuracy::new(1e-3).unwrap();
+    let props = Properties {
+        modulus: Modulus::PressureProportional,
+        limit: Limit::Constant,
+    };
+    let models = [
+        Model::ElasticPlastic,
+        Model::RigidPlastic,
+        Model::Viscoelastic {
+            deborah: 0.5,
+            z0: 1.0,
+        },
+        Model::PropertyVariation(props),
+    ];
+    for model in models {
+        for &(k, j1, j2, j3, dx, gy) in &[
+            (2.0, 1.5, 0.3, -4.0, 0.1, 1.7),
+            (0.5, 2.0, -1.0, 10.0, 0.0, 1.0),
+            (1.55, 1606.0, 0.7, 14499.0, 0.0, 1.0),
+        ] {
+            if j3 > 100.0_f64 && !matches!(model, Model::ElasticPlastic) {
+                continue;
+            }
+            let at = |j1: f64, j2: f64| {
+                let i = Inputs::with_offset(k, j1, j2, j3, dx)
+                    .unwrap()
+                    .with_stiffness_ratio(gy)
+                    .unwrap();
+                evaluate(&i, model, a).unwrap()
+            };
+            let (rev, mir) = (at(-j1, -j2), at(j1, -j2));
+            for (x, y) in [(rev.j4, -mir.j4), (rev.j5, mir.j5), (rev.j6, mir.j6)] {
+                assert!((x - y).abs() < 1e-12, "{model:?} {rev:?} {mir:?}");
+            }
+        }
+    }
+}
+
+#[test]
 fn negative_rolling_direction_is_reversed_spin_in_the_rolling_frame() {
     // App. VI prints the negative rolling direction as J5(0, −J2, J3). In the
     // frame rolling forwards (x' = −x, y' = −y) the spin is −J3 and the side
