@@ -27,14 +27,26 @@ fn bench(c: &mut Criterion) {
         .map(|v| v.vr)
         .collect();
     let mut values = vec![0.0; outs.len()];
-    for (label, spin, map) in [
-        ("with spin (20 rad/s), rheology_map on", 20.0, true),
+    // (label, ω1, ω2, side slip velocity, spin, map): rolling at U ≈ 20 m/s,
+    // and at rest (u1 = −u2 = 2 mm/s: U = 0 with 4 mm/s of slip) with spin,
+    // where both rolling frames are blended.
+    let rolling = (600.0, 275.0, 0.05);
+    let at_rest = (0.002 / 0.033, -0.002 / 0.0714, 0.0);
+    for (label, (w1, w2, dv), spin, map) in [
+        ("with spin (20 rad/s), rheology_map on", rolling, 20.0, true),
         (
             "with spin (20 rad/s), rheology_map off (default)",
+            rolling,
             20.0,
             false,
         ),
-        ("without spin", 0.0, true),
+        ("without spin", rolling, 0.0, true),
+        (
+            "at rest with spin (32 rad/s) and 4 mm/s of slip, rheology_map off",
+            at_rest,
+            32.0,
+            false,
+        ),
     ] {
         // SAFETY: valid pointers for the lifetime of the instance.
         unsafe {
@@ -55,7 +67,7 @@ fn bench(c: &mut Criterion) {
                 vr::SIDE_SLIP_VELOCITY,
                 vr::SPIN,
             ];
-            let x = [800.0, 600.0, 275.0, 0.05, spin];
+            let x = [800.0, w1, w2, dv, spin];
             assert_eq!(
                 fmi2SetReal(inst, ins.as_ptr(), ins.len(), x.as_ptr()),
                 FMI2_OK
@@ -84,7 +96,7 @@ fn bench(c: &mut Criterion) {
                     let t0 = std::time::Instant::now();
                     for _ in 0..100 {
                         k = k.wrapping_add(1);
-                        let w1 = 600.0 + f64::from(k % 100) * 0.01;
+                        let w1 = w1 * (1.0 + f64::from(k % 100) * 1.7e-5);
                         fmi2SetReal(inst, &vr::OMEGA1, 1, &w1);
                         fmi2DoStep(inst, t, 1e-4, 1);
                         t += 1e-4;
@@ -102,7 +114,7 @@ fn bench(c: &mut Criterion) {
                     b.iter(|| {
                         // A new input each step, as in a coupled simulation.
                         k = k.wrapping_add(1);
-                        let w1 = 600.0 + f64::from(k % 100) * 0.01;
+                        let w1 = w1 * (1.0 + f64::from(k % 100) * 1.7e-5);
                         fmi2SetReal(inst, &vr::OMEGA1, 1, &w1);
                         fmi2DoStep(inst, t, 1e-4, 1);
                         t += 1e-4;
