@@ -541,7 +541,7 @@ impl TractionContact {
         // (J1, −J2, J3): the models are odd in the slips (Z → −Z) and
         // symmetric about the rolling direction (Y → −Y), so its (J4, J5, J6)
         // are (−J4, J5, J6) there. Without side slip that is the forward
-        // frame itself, evaluated once.
+        // frame itself, evaluated once (docs/decisions/0111).
         let rev = match fwd {
             Some(f) if w < 1.0 => {
                 let b = if rate[1] == 0.0 {

@@ -13,7 +13,8 @@ use crate::{ContactError, Model, REGIME_TOLERANCE, Regime, TractionContact};
 /// moves the 5 % boundary of region III by at most this over the traction
 /// norm of the solution (≈ 0.1–1 where spin matters), i.e. to 5 ± 1 % at
 /// worst, while a cold rigid/plastic solution at large |J| costs ≈ 10× less
-/// than at 1e-4 (0.12 ms → < 0.01 ms for a contact at rest with spin).
+/// than at 1e-4 (0.12 ms → < 0.01 ms for a contact at rest with spin;
+/// docs/decisions/0111).
 const REGIME_RIGID_TOL: f64 = 1e-3;
 
 impl TractionContact {
