@@ -542,20 +542,23 @@ impl TractionContact {
         // symmetric about the rolling direction (Y → −Y), so its (J4, J5, J6)
         // are (−J4, J5, J6) there. Without side slip that is the forward
         // frame itself, evaluated once (docs/decisions/0111).
-        let rev = match fwd {
-            Some(f) if w < 1.0 => {
-                let b = if rate[1] == 0.0 {
-                    f
-                } else {
-                    self.branch(k, [rate[0], -rate[1], rate[2]], gy, accuracy)?
-                };
-                Some(Branch {
-                    j: frame(-1.0),
-                    out: [-b.out[0], b.out[1], b.out[2]],
-                })
-            }
-            _ if w < 1.0 => Some(self.branch(k, frame(-1.0), gy, accuracy)?),
-            _ => None,
+        let rev = if w < 1.0 {
+            Some(match fwd {
+                Some(f) => {
+                    let b = if rate[1] == 0.0 {
+                        f
+                    } else {
+                        self.branch(k, [rate[0], -rate[1], rate[2]], gy, accuracy)?
+                    };
+                    Branch {
+                        j: frame(-1.0),
+                        out: [-b.out[0], b.out[1], b.out[2]],
+                    }
+                }
+                None => self.branch(k, frame(-1.0), gy, accuracy)?,
+            })
+        } else {
+            None
         };
         // Lab-frame dimensionless forces: (σ J4_σ, σ J5_σ, J6_σ), blended.
         let mut lab = [0.0; 3];
