@@ -729,7 +729,10 @@ fn inverse_psi_inverts_psi() {
     // Also tiny S (a bisection from [0, π/2] cannot reach it in 60 halvings)
     // and a sweep across the switch of the starting point at T = 1/2.
     let sweep = (0..200).map(|i| 10f64.powf(-3.0 + 0.025 * f64::from(i)));
-    for s in [1e-200, 1e-6, 0.01, 0.5, 1.0, 3.0, 50.0, 1e3].into_iter().chain(sweep) {
+    for s in [1e-200, 1e-6, 0.01, 0.5, 1.0, 3.0, 50.0, 1e3]
+        .into_iter()
+        .chain(sweep)
+    {
         let t = closed::psi(s);
         // Conditioning: dS/S = dψ·π(1+S²)²/(4S²·S)·S ≈ (π/4)S³·ε for S ≫ 1.
         let tol = 1e-12 + 10.0 * PI / 4.0 * s.powi(3) * f64::EPSILON;
