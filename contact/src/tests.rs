@@ -4,6 +4,7 @@
 use super::*;
 use proptest::prelude::*;
 use std::f64::consts::PI;
+use std::sync::Arc;
 use traction_rheology::Inputs;
 use traction_rheology::closed;
 
@@ -976,4 +977,31 @@ fn error_chain_prints_each_message_once() {
         assert_eq!(text, format!("{context}: {cause}"));
         assert_eq!(text.matches(cause.as_str()).count(), 1, "{text}");
     }
+}
+
+#[test]
+fn report_fluids_are_built_once_and_shared() {
+    // Every contact with a report fluid shares one set of correlations (the
+    // compiled-in data are read once per process), with its own envelope.
+    let arc = |f: &Fluid| match f {
+        Fluid::Report { fluid, .. } => Some(Arc::clone(fluid)),
+        _ => None,
+    };
+    for build in [Fluid::santotrac_50, Fluid::tdf_88] {
+        let a = build(EnvelopeRule::Clamp).unwrap();
+        let b = build(EnvelopeRule::Strict).unwrap();
+        let (fa, fb) = (arc(&a).unwrap(), arc(&b).unwrap());
+        assert!(Arc::ptr_eq(&fa, &fb));
+        assert!(matches!(
+            b,
+            Fluid::Report {
+                envelope: EnvelopeRule::Strict,
+                ..
+            }
+        ));
+    }
+    let s = arc(&Fluid::santotrac_50(EnvelopeRule::Clamp).unwrap()).unwrap();
+    let t = arc(&Fluid::tdf_88(EnvelopeRule::Clamp).unwrap()).unwrap();
+    assert!(!Arc::ptr_eq(&s, &t));
+    assert_ne!(s.name, t.name);
 }
