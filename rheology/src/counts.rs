@@ -34,6 +34,10 @@ pub struct StepCounts {
     /// Exponential (ETDRK4) steps tried (where one does not apply, the RK4
     /// steps that replace it are counted too).
     pub exponential: u64,
+    /// Rosenbrock steps on the lag tried in place of RK4 sub-steps (where
+    /// one is not accurate enough, the sub-steps that replace it are
+    /// counted too).
+    pub rosenbrock: u64,
     /// Quasi-steady steps (those blended with sub-steps included).
     pub quasi_steady: u64,
     /// Unloading points located inside a step.
@@ -51,6 +55,7 @@ thread_local! {
             rk4_sub_steps: 0,
             rk5: 0,
             exponential: 0,
+            rosenbrock: 0,
             quasi_steady: 0,
             unloadings: 0,
         })
@@ -118,8 +123,8 @@ mod tests {
             "{c:?}"
         );
         assert!(c.rk4_sub_steps <= c.rk4, "{c:?}");
-        // No exponential or fifth-order steps in the reference.
-        assert_eq!((c.exponential, c.rk5), (0, 0), "{c:?}");
+        // No exponential, fifth-order or Rosenbrock steps in the reference.
+        assert_eq!((c.exponential, c.rk5, c.rosenbrock), (0, 0, 0), "{c:?}");
         reset_step_counts();
         assert_eq!(step_counts(), StepCounts::default());
     }

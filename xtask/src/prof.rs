@@ -62,7 +62,7 @@ fn print_counts(reps: usize) {
     eprintln!(
         "per evaluation: {:.0} strips, {:.1} yield searches, {:.0} stiff steps, {:.0} RK4 \
          steps ({:.0} of them sub-steps), {:.0} fifth-order, {:.0} exponential, {:.0} \
-         quasi-steady, {:.1} unloadings; per strip {:.1} RK4",
+         Rosenbrock, {:.0} quasi-steady, {:.1} unloadings; per strip {:.1} RK4",
         per(c.strips),
         per(c.yield_searches),
         per(c.stiff_steps),
@@ -70,6 +70,7 @@ fn print_counts(reps: usize) {
         per(c.rk4_sub_steps),
         per(c.rk5),
         per(c.exponential),
+        per(c.rosenbrock),
         per(c.quasi_steady),
         per(c.unloadings),
         per(c.rk4) / strips,

@@ -26,7 +26,11 @@
 //!   rate (2/3)|v| makes RK4 unstable or inaccurate (κ·h > 2, within stiff
 //!   segments κ·h > 1.5; sub-steps whose lengths vary continuously with
 //!   κ·h, so that the outputs stay smooth in the inputs),
-//!   and where it exceeds 8 sub-steps per step n follows its quasi-steady
+//!   where they exceed 3.5 and the slip direction turns slowly, one step of
+//!   the L-stable Rosenbrock method RODAS3 on the lag φ = α − θ takes
+//!   their place in [`Strip::integrate_etd`] (blended in, and out as its
+//!   error estimate rises; `Strip::rodas3_lag`),
+//!   and where they exceed 8 sub-steps per step n follows its quasi-steady
 //!   solution θ = α − asin(α'/κ) (blended in from 8 to 9 sub-steps; the
 //!   rigid/plastic direction with the first elastic lag; for gy ≠ 1 the root
 //!   of dθ/ds = α' of the anisotropic law, and only beyond 4·16·f sub-steps,

@@ -79,6 +79,27 @@ const TURN_BOUND_NEWTON: usize = 4;
 const TURN_BOUND_DISTANCE: f64 = 0.25;
 /// Largest number of sub-steps per step for the turn of the slip direction.
 const MAX_SUB_TURN: f64 = 256.0;
+/// RK4 sub-step counts for κ (κ·h/KAPPA_H_STIFF) over which one
+/// Rosenbrock step on the lag (`Strip::rodas3_lag`) takes the place of the
+/// sub-steps of an isotropic step (a C¹ step in between; `evaluate` only),
+/// where the slip direction turns slowly (ROS_SUB_TURN) and the step's
+/// error estimate is small (ROS_EST). A Rosenbrock step runs ≈ 1.5–2 RK4
+/// sub-steps' instructions, but on a longer chain of dependent operations:
+/// in wall time it pays from ≈ 4 sub-steps on (docs/decisions/0114; from 3:
+/// the random batch at tol 1e-4 +3 %, k = 0.33, J = (3.3, 2.7, 25.8) at
+/// 1e-3 +5 %). The narrow blend keeps the steps that take both few (with
+/// (4, 5), k = 1, J = (0.5, 1, 100) at tol 1e-3 had all its 559 such steps
+/// in the blend, +30 % time).
+const ROS_SUB: (f64, f64) = (3.5, 3.75);
+/// The turn's sub-step counts (|α'|·h/a_h) over which the Rosenbrock step
+/// is blended out.
+const ROS_SUB_TURN: (f64, f64) = (0.8, 1.0);
+/// Error estimate of a Rosenbrock step's lag allowed, ROS_EST·s_step⁴ rad
+/// (4·tol at the s-step of tol, `Accuracy::s_step`), blended out up to
+/// twice that: the estimate is 3–5 times the actual error of the
+/// direction, which relaxes within 1/κ, so its effect on the strip sums is
+/// far smaller (docs/decisions/0114).
+const ROS_EST: f64 = 40.0;
 /// Largest κ·h of a step that is limited by the exact turn of the slip
 /// direction (`Strip::turn_step`) rather than by the bound |α'|max·h
 /// (which makes the steps creep towards vy = 0 in short pieces). Where
@@ -401,6 +422,39 @@ impl Strip {
                 return self.plastic_rk5::<ISO, VIS>(sn, cs, n, acc, allow_unload, steps, rec);
             }
         }
+        // Segments whose κ·h can exceed ROS_SUB.0·KAPPA_H_STIFF may take
+        // Rosenbrock steps in place of RK4 sub-steps: their own
+        // instantiation of the stepping loop, so that the loop of the others
+        // stays as it was (in the common loop the branch slowed the steps
+        // that never take it: docs/decisions/0113, 0114). Isotropic
+        // stiffness, in `evaluate` (`etd_step` > 0), not on the pole's strip
+        // (a = 0).
+        let seg = (sn, cs, n, s0);
+        let steps = (h, nsteps, nonstiff, s_step, exact_turn);
+        if ISO && !nonstiff && etd_step > 0.0 && self.a != 0.0 && kr * h > ROS_SUB.0 * KAPPA_H_STIFF
+        {
+            self.stepping::<ISO, VIS, true>(seg, steps, acc, allow_unload, rec)
+        } else {
+            self.stepping::<ISO, VIS, false>(seg, steps, acc, allow_unload, rec)
+        }
+    }
+
+    /// The stepping loop of [`Strip::plastic`] from yield at (`sn`, `cs`)
+    /// with direction `n` (s0 = its angle) in steps of at most h (`nsteps`
+    /// equal ones on a non-stiff segment); `ROS`: a step whose bounds allow
+    /// it leaves the loop for `Strip::advance_ros`, which may take a
+    /// Rosenbrock step in place of its RK4 sub-steps.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn stepping<const ISO: bool, const VIS: bool, const ROS: bool>(
+        &self,
+        (sn, cs, n, s0): (f64, f64, (f64, f64), f64),
+        (h, nsteps, nonstiff, s_step, exact_turn): (f64, usize, bool, f64, bool),
+        acc: &mut StripSums,
+        allow_unload: bool,
+        rec: &mut impl FnMut(Event),
+    ) -> PlasticEnd {
+        let a_h = TURN_PER_STEP * s_step;
         let (s2, c2) = sin_cos_small(0.5 * h);
         // sin/cos of the whole step (double angle).
         let sc_h = (2.0 * s2 * c2, (c2 - s2) * (c2 + s2));
@@ -428,102 +482,190 @@ impl Strip {
         };
         // The graded cap of step i: h_first·2^(min(i − 1, 30)) (exact).
         let mut h_grade = h_first;
-        loop {
-            // Non-stiff segments: nsteps equal steps. Otherwise steps of at
-            // most h, shortened where the slip direction turns by more than
-            // a_h (near the strip's crossing of the spin pole's line vy = 0),
-            // so that unloading is checked at that resolution too.
-            let (h, c2, s2, last, step_rates, a_h_step) = if nonstiff {
-                i += 1;
-                (h, c2, s2, i == nsteps, None, a_h)
-            } else {
-                let rem = FRAC_PI_2 - s_cur;
-                i += 1;
-                let mut hv = if rem <= 1.01 * h || i > MAX_STEPS {
-                    rem
+        // With `ROS`, steps that may take a Rosenbrock step in place of RK4
+        // sub-steps leave this loop and are taken by `Strip::advance_ros`,
+        // outside it (in the loop, that branch slowed the others).
+        'segment: loop {
+            let ros_step = loop {
+                // Non-stiff segments: nsteps equal steps. Otherwise steps of at
+                // most h, shortened where the slip direction turns by more than
+                // a_h (near the strip's crossing of the spin pole's line vy = 0),
+                // so that unloading is checked at that resolution too.
+                let (h, c2, s2, last, step_rates, a_h_step) = if nonstiff {
+                    i += 1;
+                    (h, c2, s2, i == nsteps, None, a_h)
                 } else {
-                    h
-                };
-                // sin/cos of s_cur + hv (the outlet for the last step).
-                let (s1, c1) = if hv == rem {
-                    (1.0, 0.0)
-                } else {
-                    let (sh, ch) = if hv == h { sc_h } else { sin_cos_small(hv) };
-                    (p.sn * ch + p.cs * sh, p.cs * ch - p.sn * sh)
-                };
-                let (kh, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1.max(0.0), hv);
-                let h_full = hv;
-                // The turn limit of `advance`'s sub-division for this step
-                // (none for a step set by the exact turn).
-                let mut a_h_step = a_h;
-                if ah > a_h && i <= MAX_STEPS {
-                    let hb = hv * (a_h / ah).max(1.0 / MAX_SUB_TURN);
-                    // The step to an exact turn of a_h is at least hb (the
-                    // bound over-estimates the turn); taken where RK4
-                    // resolves it (κ·h ≤ TURN_EXACT_BLEND.0, κ·h ∝ h), the
-                    // bound's step from κ·h ≥ TURN_EXACT_BLEND.1, and in
-                    // between a step from hb to hx with the turn sub-steps'
-                    // limit from a_h to ∞, both by a C¹ step in κ·h, so that
-                    // the choice adds no jump in the inputs.
-                    let hx = if turn_t.is_nan() {
-                        hb
+                    let rem = FRAC_PI_2 - s_cur;
+                    i += 1;
+                    let mut hv = if rem <= 1.01 * h || i > MAX_STEPS {
+                        rem
                     } else {
-                        self.turn_step(&p, turn_t, s1, hv).clamp(hb, hv)
+                        h
                     };
-                    let (b0, b1) = TURN_EXACT_BLEND;
-                    let x = kh * (hx / hv);
-                    // Where the bound's step enters, not shorter than the
-                    // bound over its own span (`turn_bound_step`; with the
-                    // exact turn, in `evaluate`), which is at most hx.
-                    let hb = if x > b0 && !turn_t.is_nan() {
-                        hb.max(self.turn_bound_step(&p, a_h, hb).min(hx))
+                    // sin/cos of s_cur + hv (the outlet for the last step).
+                    let (s1, c1) = if hv == rem {
+                        (1.0, 0.0)
                     } else {
-                        hb
+                        let (sh, ch) = if hv == h { sc_h } else { sin_cos_small(hv) };
+                        (p.sn * ch + p.cs * sh, p.cs * ch - p.sn * sh)
                     };
-                    if hx > hb && x < b1 {
-                        let w = 1.0 - smooth_step((x - b0) / (b1 - b0));
-                        hv = hb + w * (hx - hb);
-                        a_h_step = a_h / (1.0 - w);
+                    let (kh, ah) = self.rates::<ISO>(p.sn, p.cs, s1, c1.max(0.0), hv);
+                    let h_full = hv;
+                    // The turn limit of `advance`'s sub-division for this step
+                    // (none for a step set by the exact turn).
+                    let mut a_h_step = a_h;
+                    if ah > a_h && i <= MAX_STEPS {
+                        let hb = hv * (a_h / ah).max(1.0 / MAX_SUB_TURN);
+                        // The step to an exact turn of a_h is at least hb (the
+                        // bound over-estimates the turn); taken where RK4
+                        // resolves it (κ·h ≤ TURN_EXACT_BLEND.0, κ·h ∝ h), the
+                        // bound's step from κ·h ≥ TURN_EXACT_BLEND.1, and in
+                        // between a step from hb to hx with the turn sub-steps'
+                        // limit from a_h to ∞, both by a C¹ step in κ·h, so that
+                        // the choice adds no jump in the inputs.
+                        let hx = if turn_t.is_nan() {
+                            hb
+                        } else {
+                            self.turn_step(&p, turn_t, s1, hv).clamp(hb, hv)
+                        };
+                        let (b0, b1) = TURN_EXACT_BLEND;
+                        let x = kh * (hx / hv);
+                        // Where the bound's step enters, not shorter than the
+                        // bound over its own span (`turn_bound_step`; with the
+                        // exact turn, in `evaluate`), which is at most hx.
+                        let hb = if x > b0 && !turn_t.is_nan() {
+                            hb.max(self.turn_bound_step(&p, a_h, hb).min(hx))
+                        } else {
+                            hb
+                        };
+                        if hx > hb && x < b1 {
+                            let w = 1.0 - smooth_step((x - b0) / (b1 - b0));
+                            hv = hb + w * (hx - hb);
+                            a_h_step = a_h / (1.0 - w);
+                        } else {
+                            hv = hb;
+                        }
+                    }
+                    // Graded first steps: the lag of n behind the slip direction
+                    // at yield relaxes within ~1/κ, which RK4 at κ·h ≈ 2 resolves
+                    // poorly; start at κ·h = GRADED_KAPPA_H and double.
+                    if i < GRADED_STEPS {
+                        hv = hv.min(h_grade);
+                        if i <= 30 {
+                            h_grade *= 2.0;
+                        }
+                    }
+                    // The bounds just computed hold for the step unless it was
+                    // shortened (`advance` then computes them for the new step).
+                    let step_rates = (hv == h_full).then_some((kh, ah));
+                    let (s2v, c2v) = if hv == h {
+                        (s2, c2)
                     } else {
-                        hv = hb;
+                        sin_cos_small(0.5 * hv)
+                    };
+                    if ROS
+                        && hv == h_full
+                        && kh > ROS_SUB.0 * KAPPA_H_STIFF
+                        && ah < ROS_SUB_TURN.1 * a_h_step
+                        && kh < QS_BLEND * MAX_SUB as f64 * KAPPA_H
+                    {
+                        break Some((hv, c2v, s2v, hv >= rem, kh, ah, a_h_step));
                     }
-                }
-                // Graded first steps: the lag of n behind the slip direction
-                // at yield relaxes within ~1/κ, which RK4 at κ·h ≈ 2 resolves
-                // poorly; start at κ·h = GRADED_KAPPA_H and double.
-                if i < GRADED_STEPS {
-                    hv = hv.min(h_grade);
-                    if i <= 30 {
-                        h_grade *= 2.0;
-                    }
-                }
-                // The bounds just computed hold for the step unless it was
-                // shortened (`advance` then computes them for the new step).
-                let step_rates = (hv == h_full).then_some((kh, ah));
-                let (s2v, c2v) = if hv == h {
-                    (s2, c2)
-                } else {
-                    sin_cos_small(0.5 * hv)
+                    (hv, c2v, s2v, hv >= rem, step_rates, a_h_step)
                 };
-                (hv, c2v, s2v, hv >= rem, step_rates, a_h_step)
+                let mut q = if nonstiff {
+                    self.rk4::<ISO>(&p, h, c2, s2)
+                } else {
+                    s_cur += h;
+                    self.advance::<ISO>(&p, h, c2, s2, a_h_step, step_rates)
+                };
+                let step = (h, last, allow_unload, a_h);
+                if let Some(end) = self.step_end::<ISO, VIS>(&p, &mut q, step, acc, rec) {
+                    return end;
+                }
+                p = q;
+                if last {
+                    break None;
+                }
             };
-            let mut q = if nonstiff {
-                self.rk4::<ISO>(&p, h, c2, s2)
-            } else {
-                s_cur += h;
-                self.advance::<ISO>(&p, h, c2, s2, a_h_step, step_rates)
+            let Some((h, c2, s2, last, kh, ah, a_h_step)) = ros_step else {
+                break 'segment;
             };
+            s_cur += h;
+            let ros_eps = ROS_EST * (s_step * s_step) * (s_step * s_step);
+            let mut q = self.advance_ros(&p, (h, c2, s2), a_h_step, (kh, ah), ros_eps);
             let step = (h, last, allow_unload, a_h);
             if let Some(end) = self.step_end::<ISO, VIS>(&p, &mut q, step, acc, rec) {
                 return end;
             }
             p = q;
             if last {
-                break;
+                break 'segment;
             }
         }
         *acc += p.acc;
         PlasticEnd::Outlet
+    }
+
+    /// `Strip::advance` of an isotropic step with its bounds (κ·h, |α'|·h)
+    /// where a Rosenbrock step may take the place of its RK4 sub-steps
+    /// (`Strip::sub_steps_or_ros`); the quasi-steady blend as there.
+    #[inline(never)]
+    fn advance_ros(
+        &self,
+        p: &PState,
+        (h, c2, s2): (f64, f64, f64),
+        a_h: f64,
+        (kh, ah): (f64, f64),
+        eps: f64,
+    ) -> PState {
+        crate::counts::count!(stiff_steps);
+        let mk = kh / KAPPA_H;
+        let (mr_k, mr_a) = (kh / KAPPA_H_STIFF, (ah / a_h).min(MAX_SUB_TURN));
+        let rk = self.sub_steps_or_ros(p, (h, c2, s2), (mr_k, mr_a), eps);
+        let max_sub = MAX_SUB as f64;
+        if mk <= max_sub {
+            return rk;
+        }
+        let qs = self.quasi_steady(p, h, c2, s2);
+        let t = (mk / max_sub - 1.0) / (QS_BLEND - 1.0);
+        blend(&rk, &qs, smooth_step(t))
+    }
+
+    /// The RK4 sub-steps of an isotropic step (`Strip::sub_steps`), or one
+    /// Rosenbrock step on the lag in their place (`Strip::rodas3_lag`),
+    /// blended in where the sub-step count for κ rises over ROS_SUB, the
+    /// turn's falls below ROS_SUB_TURN and the step's error estimate below
+    /// twice `eps` (each a C¹ step).
+    #[inline(always)]
+    fn sub_steps_or_ros(
+        &self,
+        p: &PState,
+        (h, c2, s2): (f64, f64, f64),
+        (mr_k, mr_a): (f64, f64),
+        eps: f64,
+    ) -> PState {
+        let mr = mr_k.max(mr_a);
+        let w = smooth_step((mr_k - ROS_SUB.0) / (ROS_SUB.1 - ROS_SUB.0))
+            * (1.0 - smooth_step((mr_a - ROS_SUB_TURN.0) / (ROS_SUB_TURN.1 - ROS_SUB_TURN.0)));
+        if w <= 0.0 {
+            return self.sub_steps::<true>(p, (h, c2, s2), mr);
+        }
+        let (e, est) = self.rodas3_lag(p, h, c2, s2);
+        // NaN (an estimate that cannot be trusted): the sub-steps.
+        let w = if est <= 2.0 * eps {
+            w * (1.0 - smooth_step(est / eps - 1.0))
+        } else {
+            0.0
+        };
+        if w >= 1.0 {
+            return e;
+        }
+        let rk = self.sub_steps::<true>(p, (h, c2, s2), mr);
+        if w <= 0.0 {
+            return rk;
+        }
+        blend(&rk, &e, w)
     }
 
     /// A longer step than `hb`, the bound's step of `plastic`, towards the

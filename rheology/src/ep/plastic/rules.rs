@@ -56,6 +56,22 @@ pub(super) fn sin_cos_small(x: f64) -> (f64, f64) {
     (s, c)
 }
 
+/// (sin x, cos x) of a small angle: for |x| ≤ 1/16 Taylor polynomials of
+/// degree 7 and 8, whose truncation error (< x⁹/9! ≈ 4e-17) is below the
+/// rounding of f64 (half the dependent operations of [`sin_cos_small`],
+/// on the chain of `Strip::rodas3_lag`, whose lag increments per step are
+/// mostly below 1e-2); larger angles as [`sin_cos_small`].
+#[inline]
+fn sin_cos_lag(x: f64) -> (f64, f64) {
+    if x.abs() > 0.0625 {
+        return sin_cos_small(x);
+    }
+    let x2 = x * x;
+    let s = x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0)));
+    let c = 1.0 - x2 / 2.0 * (1.0 - x2 / 12.0 * (1.0 - x2 / 30.0 * (1.0 - x2 / 56.0)));
+    (s, c)
+}
+
 /// Newton on the anisotropic quasi-steady direction (`qs_dir`): iterations,
 /// central-difference step in θ, convergence in θ (rad) and the largest
 /// correction from the isotropic guess that is still trusted (rad).
@@ -63,6 +79,19 @@ const QS_NEWTON_ITERATIONS: usize = 4;
 const QS_DIFF_STEP: f64 = 1e-6;
 const QS_NEWTON_TOL: f64 = 1e-12;
 const QS_MAX_CORRECTION: f64 = 0.5;
+
+/// RODAS3's coefficients c_ij (stages 2–4) and γ_i (stages 1–2; 0 for 3
+/// and 4) in the form of `Strip::rodas3_lag`, with a21 = a32 = a42 = 0,
+/// a31 = a41 = 2, a43 = 1, weights (2, 0, 1, 1) and γ = 1/2 (Sandu et al.
+/// 1997; Hairer & Wanner, Solving Ordinary Differential Equations II,
+/// sect. IV.7). A test checks its third order and R(∞) = 0.
+pub(super) const RD3_C21: f64 = 4.0;
+pub(super) const RD3_C31: f64 = 1.0;
+pub(super) const RD3_C32: f64 = -1.0;
+pub(super) const RD3_C41: f64 = 1.0;
+pub(super) const RD3_C42: f64 = -1.0;
+pub(super) const RD3_C43: f64 = -8.0 / 3.0;
+pub(super) const RD3_GAMMA_I: (f64, f64) = (0.5, 1.5);
 
 /// The 3-point Gauss–Legendre rule on [−1, 1]: nodes ±GL3_X = ±√(3/5) and
 /// 0, weights GL3_W (outer, middle).
@@ -350,6 +379,111 @@ impl Strip {
             ny,
             acc,
         })
+    }
+
+    /// One step of length h of RODAS3 (Sandu et al., Atmospheric
+    /// Environment 31 (1997) 3459–3472: four stages, order 3, L-stable and
+    /// stiffly accurate, three evaluations) on the lag φ = α − θ of the
+    /// stress direction behind the slip direction, dφ/ds = α' − κ·sin φ
+    /// (isotropic stiffness; κ = (2/3)|v|, α' = a·q2·c·cos s/|v|², both in
+    /// closed form at any s). On a relaxed stiff segment φ stays near
+    /// asin(α'/κ), small and slowly varying, so the step follows the turn
+    /// of the slip direction exactly and its error is that of φ, not of θ:
+    /// on the strip at Y = 0.623 of the state at rest (k = 1, J = (220, 0,
+    /// 866)) 1e-7 … 8e-6 rad per step of 0.056, against 1e-5 … 1.5e-4 for
+    /// the same method on θ. The new direction is v̂ rotated by −φ; the
+    /// strip sums come from Simpson's rule, the lag at the midpoint from
+    /// the cubic Hermite interpolant of φ over the step (docs/decisions/0114:
+    /// the corrected trapezoidal rule from the ends' values and slopes saves
+    /// a square root, but on the strip next to the pole's at J3 = 100,
+    /// h = 0.3, its sums were 2e-4 off, Simpson's 5e-5). Returns the new
+    /// state and the method's error estimate |U4| of φ (rad; the difference
+    /// from its embedded second-order solution), which is 3–5 times the
+    /// actual error where measured; ∞ where cos φ0 < 1/2. The caller
+    /// excludes the pole's strip (a = 0, where v̂ flips at vy = 0).
+    #[inline(always)]
+    pub(super) fn rodas3_lag(&self, p: &PState, h: f64, c2: f64, s2: f64) -> (PState, f64) {
+        crate::counts::count!(rosenbrock);
+        let c = self.c;
+        let a = self.a;
+        let qc = self.q2 * c;
+        let aq = a * qc;
+        let k = 2.0 / 3.0;
+        let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
+        let (s1, c1) = (sm * c2 + cm * s2, (cm * c2 - sm * s2).max(0.0));
+        let (x0, x1) = (c * p.sn, c * s1);
+        let (vy0, vy1) = (self.vy(x0), self.vy(x1));
+        let (m20, m21) = (a * a + vy0 * vy0, a * a + vy1 * vy1);
+        // f0 = α' − κ·sin φ0, ∂f/∂φ = −κ·cos φ0 and ∂f/∂s at s0 from
+        // κ·(sin φ0, cos φ0) = (2/3)·(v × n, v·n) and 1/|v|², without the
+        // square root (the stages' chain of dependent operations starts
+        // here; v̂ is needed only from stage 3 on).
+        let i20 = 1.0 / m20;
+        let (vxn, vdn) = (vy0 * p.nx - a * p.ny, a * p.nx + vy0 * p.ny);
+        let al0 = aq * p.cs * i20;
+        let f0 = al0 - k * vxn;
+        let jac = -k * vdn;
+        // dα'/ds and dκ/ds·sin φ0 at fixed φ.
+        let dal = -aq * i20 * (p.sn + 2.0 * p.cs * p.cs * vy0 * qc * i20);
+        let dks = k * vy0 * qc * p.cs * vxn * i20;
+        let th = h * (dal - dks);
+        // v̂, α' and κ at s1; sin φ0, cos φ0.
+        let (im0, im1) = (1.0 / m20.sqrt(), 1.0 / m21.sqrt());
+        let (ux1, uy1) = (a * im1, vy1 * im1);
+        let al1 = aq * c1 * im1 * im1;
+        let k1 = k * m21 * im1;
+        let (sp0, cp0) = (vxn * im0, vdn * im0);
+        // The stages as increments of φ from φ0, (1/(γh) − J)·U_i = f_i +
+        // Σ c_ij·U_j/h + γ_i·h·∂f/∂s with γ = 1/2: U_i = h·d·(…) + d·Σ c_ij·U_j,
+        // d = 1/(2 − h·J) (> 0 where the lag is below π/2).
+        let d = 1.0 / (2.0 - h * jac);
+        let hd = h * d;
+        let u1 = hd * (f0 + RD3_GAMMA_I.0 * th);
+        let u2 = hd * (f0 + RD3_GAMMA_I.1 * th) + d * RD3_C21 * u1;
+        // sin and cos of φ0 + δ.
+        let lag = |dl: f64| {
+            let (sd, cd) = sin_cos_lag(dl);
+            (sp0 * cd + cp0 * sd, cp0 * cd - sp0 * sd)
+        };
+        // Stages 3 and 4 at s1 (a31 = 2, a41 = 2, a43 = 1).
+        let d3 = 2.0 * u1;
+        let f3 = al1 - k1 * lag(d3).0;
+        let u3 = hd * f3 + d * (RD3_C31 * u1 + RD3_C32 * u2);
+        let d4 = d3 + u3;
+        let f4 = al1 - k1 * lag(d4).0;
+        let u4 = hd * f4 + d * (RD3_C41 * u1 + RD3_C42 * u2 + RD3_C43 * u3);
+        // Stiffly accurate: φ1 = φ0 + 2·U1 + U3 + U4.
+        let (sp1, cp1) = lag(d4 + u4);
+        let (nx, ny) = (ux1 * cp1 + uy1 * sp1, uy1 * cp1 - ux1 * sp1);
+        // The strip sums, F = w·(nx, ny, X·ny), w = (3/2)·c²·cos² s, by
+        // Simpson's rule; the lag at the midpoint from the cubic Hermite
+        // interpolant of φ (slopes f0 and f(s1, φ1)), v̂ there exact.
+        let dm = 0.5 * (d4 + u4) + 0.125 * h * (f0 - (al1 - k1 * sp1));
+        let (spm, cpm) = lag(dm);
+        let xm = c * sm;
+        let vym = self.vy(xm);
+        let imm = 1.0 / (a * a + vym * vym).sqrt();
+        let (uxm, uym) = (a * imm, vym * imm);
+        let (nmx, nmy) = (uxm * cpm + uym * spm, uym * cpm - uxm * spm);
+        let w = 1.5 * c * c;
+        let (w0, wm, w1) = (w * p.cs * p.cs, 4.0 * w * cm * cm, w * c1 * c1);
+        let h6 = h / 6.0;
+        let mut acc = p.acc;
+        acc.ix += h6 * (w0 * p.nx + wm * nmx + w1 * nx);
+        acc.iy += h6 * (w0 * p.ny + wm * nmy + w1 * ny);
+        acc.ixy += h6 * (w0 * x0 * p.ny + wm * xm * nmy + w1 * x1 * ny);
+        let q = PState {
+            sn: s1,
+            cs: c1,
+            nx,
+            ny,
+            acc,
+        };
+        // Relaxed flow only: where the stress direction is more than 60°
+        // from the slip's (a stress left behind by a reversal of the slip,
+        // which unloads), no estimate (the caller takes RK4 sub-steps).
+        let est = if cp0 >= 0.5 { u4.abs() } else { f64::INFINITY };
+        (q, est)
     }
 
     /// Quasi-steady direction (stiff limit): v̂ rotated by −asin(α'/κ).
