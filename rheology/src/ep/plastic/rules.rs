@@ -504,10 +504,12 @@ impl Strip {
                 (vx.signum() * 0.0 + 1.0, 0.0)
             };
         }
-        let (ux, uy) = (vx / m, vy / m);
+        // One division: 1/|v| (the divisions by |v| were a chain of three).
+        let im = 1.0 / m;
+        let (ux, uy) = (vx * im, vy * im);
         // α' = dα/ds = vx·(dvy/ds)/|v|², κ = (2/3)|v|.
-        let alpha_s = ux * self.q2 / self.gy * self.c * cs / m;
-        let sd = (-alpha_s * 1.5 / m).clamp(-1.0, 1.0);
+        let alpha_s = ux * self.q2 / self.gy * self.c * cs * im;
+        let sd = (-alpha_s * 1.5 * im).clamp(-1.0, 1.0);
         let cd = (1.0 - sd * sd).sqrt();
         let iso = (ux * cd - uy * sd, ux * sd + uy * cd);
         if self.gy == 1.0 {
