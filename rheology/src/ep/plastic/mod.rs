@@ -444,7 +444,6 @@ impl Strip {
     /// equal ones on a non-stiff segment); `ROS`: a step whose bounds allow
     /// it leaves the loop for `Strip::advance_ros`, which may take a
     /// Rosenbrock step in place of its RK4 sub-steps.
-    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn stepping<const ISO: bool, const VIS: bool, const ROS: bool>(
         &self,
