@@ -608,7 +608,10 @@ impl Strip {
 
     /// `Strip::advance` of an isotropic step with its bounds (κ·h, |α'|·h)
     /// where a Rosenbrock step may take the place of its RK4 sub-steps
-    /// (`Strip::sub_steps_or_ros`); the quasi-steady blend as there.
+    /// (`Strip::sub_steps_or_ros`); the quasi-steady blend as there (the
+    /// same lines: shared through a helper taking the sub-steps as a
+    /// closure, the bench set ran 1.6–3.2 % more instructions, the state at
+    /// rest 1.1 %, with bit-identical results).
     #[inline(never)]
     fn advance_ros(
         &self,

@@ -452,19 +452,19 @@ impl Strip {
         let d4 = d3 + u3;
         let f4 = al1 - k1 * lag(d4).0;
         let u4 = hd * f4 + d * (RD3_C41 * u1 + RD3_C42 * u2 + RD3_C43 * u3);
+        // n = v̂ rotated by −φ.
+        let dir = |ux: f64, uy: f64, (sp, cp): (f64, f64)| (ux * cp + uy * sp, uy * cp - ux * sp);
         // Stiffly accurate: φ1 = φ0 + 2·U1 + U3 + U4.
         let (sp1, cp1) = lag(d4 + u4);
-        let (nx, ny) = (ux1 * cp1 + uy1 * sp1, uy1 * cp1 - ux1 * sp1);
+        let (nx, ny) = dir(ux1, uy1, (sp1, cp1));
         // The strip sums, F = w·(nx, ny, X·ny), w = (3/2)·c²·cos² s, by
         // Simpson's rule; the lag at the midpoint from the cubic Hermite
         // interpolant of φ (slopes f0 and f(s1, φ1)), v̂ there exact.
         let dm = 0.5 * (d4 + u4) + 0.125 * h * (f0 - (al1 - k1 * sp1));
-        let (spm, cpm) = lag(dm);
         let xm = c * sm;
         let vym = self.vy(xm);
         let imm = 1.0 / (a * a + vym * vym).sqrt();
-        let (uxm, uym) = (a * imm, vym * imm);
-        let (nmx, nmy) = (uxm * cpm + uym * spm, uym * cpm - uxm * spm);
+        let (nmx, nmy) = dir(a * imm, vym * imm, lag(dm));
         let w = 1.5 * c * c;
         let (w0, wm, w1) = (w * p.cs * p.cs, 4.0 * w * cm * cm, w * c1 * c1);
         let h6 = h / 6.0;
