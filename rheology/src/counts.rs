@@ -6,9 +6,10 @@
 //! plastic segments by kind, so that a cost can be split into strips ×
 //! steps per strip and the steps by the rule that takes them. The
 //! viscoelastic model's isotropic caps run on the same plastic stepping and
-//! are counted with it (its own Rosenbrock steps are not).
-//! The profiling driver `xtask prof`, built with `--features step-counts`,
-//! prints them per evaluation (docs/DEVELOPING.md).
+//! are counted with it; its strips and its own Rosenbrock step attempts are
+//! counted apart.
+//! The profiling drivers `xtask prof` and `xtask prof-visco`, built with
+//! `--features step-counts`, print them per evaluation (docs/DEVELOPING.md).
 
 #[cfg(feature = "step-counts")]
 use std::cell::Cell;
@@ -42,6 +43,11 @@ pub struct StepCounts {
     pub quasi_steady: u64,
     /// Unloading points located inside a step.
     pub unloadings: u64,
+    /// Strips integrated by the viscoelastic model (`visco::strip`).
+    pub visco_strips: u64,
+    /// Rosenbrock step attempts of the viscoelastic strips (the interior,
+    /// and the caps with an anisotropic stiffness), rejected ones included.
+    pub visco_steps: u64,
 }
 
 #[cfg(feature = "step-counts")]
@@ -58,6 +64,8 @@ thread_local! {
             rosenbrock: 0,
             quasi_steady: 0,
             unloadings: 0,
+            visco_strips: 0,
+            visco_steps: 0,
         })
     };
 }
@@ -127,5 +135,43 @@ mod tests {
         assert_eq!((c.exponential, c.rk5, c.rosenbrock), (0, 0, 0), "{c:?}");
         reset_step_counts();
         assert_eq!(step_counts(), StepCounts::default());
+    }
+
+    #[test]
+    fn counts_the_viscoelastic_strips_apart_from_their_caps_steps() {
+        // The viscoelastic strips and their Rosenbrock attempts have counts
+        // of their own (every strip takes at least one step); the caps of
+        // an isotropic stiffness run on the elastic/plastic stepping and
+        // count there, without counting as elastic/plastic strips; with
+        // gy ≠ 1 the caps take Rosenbrock steps, so no plastic steps count.
+        use crate::{Accuracy, Model, evaluate};
+        let model = Model::Viscoelastic {
+            deborah: 1.0,
+            z0: 1.0,
+        };
+        let acc = Accuracy::new(1e-3).unwrap();
+        reset_step_counts();
+        // The high-spin viscoelastic bench case h, whose strips reach the cap.
+        let inp = Inputs::new(5.0, 0.0, 3.368, 25.816).unwrap();
+        evaluate(&inp, model, acc).unwrap();
+        let c = step_counts();
+        assert!(c.visco_strips > 0, "{c:?}");
+        assert!(c.visco_steps >= c.visco_strips, "{c:?}");
+        assert_eq!((c.strips, c.yield_searches), (0, 0), "{c:?}");
+        assert!(c.rk4 + c.rk5 + c.exponential > 0, "{c:?}");
+        reset_step_counts();
+        let inp = inp.with_stiffness_ratio(2.0).unwrap();
+        evaluate(&inp, model, acc).unwrap();
+        let c = step_counts();
+        assert!(
+            c.visco_steps >= c.visco_strips && c.visco_strips > 0,
+            "{c:?}"
+        );
+        assert_eq!(
+            (c.rk4, c.rk5, c.exponential, c.stiff_steps),
+            (0, 0, 0, 0),
+            "{c:?}"
+        );
+        reset_step_counts();
     }
 }

@@ -38,7 +38,8 @@ commands:
   prof-visco [CASE [TOL [REPS [old|gauss]]]]
                                   the same for the viscoelastic model: CASE m h x l e g
                                   (prof_visco.rs); `old` = the former fixed-grid scheme,
-                                  `gauss` = the former Gauss-Legendre panel rule
+                                  `gauss` = the former Gauss-Legendre panel rule; with
+                                  --features step-counts also its strips and steps
   ir [ep|visco] [TOL [CASE...]]   instructions per cold evaluation of the bench cases
                                   (default all, TOL 1e-3): prof/prof-visco under callgrind
                                   with 1 and 3 evaluations, (Ir(3) - Ir(1))/2 (ir.rs;

@@ -48,23 +48,38 @@ pub fn run(a: &[String]) -> Result<(), String> {
     }
     println!("{:.10} {:.10} {:.10}", o.j4, o.j5, o.j6);
     #[cfg(feature = "step-counts")]
-    print_counts(reps);
+    print_counts(reps, false);
     Ok(())
 }
 
-/// The step counts per evaluation, on stderr.
+/// The step counts per evaluation, on stderr: the elastic/plastic strips
+/// and their plastic steps by kind; with `visco` the viscoelastic strips
+/// and their Rosenbrock step attempts, then the plastic steps of their caps
+/// (those with an isotropic stiffness run on the elastic/plastic stepping).
 #[cfg(feature = "step-counts")]
-fn print_counts(reps: usize) {
+pub fn print_counts(reps: usize, visco: bool) {
     let c = traction_rheology::step_counts();
     let r = reps.max(1) as f64;
     let per = |n: u64| n as f64 / r;
-    let strips = per(c.strips).max(1.0);
+    let (head, strips) = if visco {
+        let head = format!(
+            "{:.0} viscoelastic strips, {:.0} Rosenbrock step attempts; on the caps",
+            per(c.visco_strips),
+            per(c.visco_steps)
+        );
+        (head, per(c.visco_strips))
+    } else {
+        let head = format!(
+            "{:.0} strips, {:.1} yield searches",
+            per(c.strips),
+            per(c.yield_searches)
+        );
+        (head, per(c.strips))
+    };
     eprintln!(
-        "per evaluation: {:.0} strips, {:.1} yield searches, {:.0} stiff steps, {:.0} RK4 \
-         steps ({:.0} of them sub-steps), {:.0} fifth-order, {:.0} exponential, {:.0} \
-         Rosenbrock, {:.0} quasi-steady, {:.1} unloadings; per strip {:.1} RK4",
-        per(c.strips),
-        per(c.yield_searches),
+        "per evaluation: {head}: {:.0} stiff steps, {:.0} RK4 steps ({:.0} of them \
+         sub-steps), {:.0} fifth-order, {:.0} exponential, {:.0} Rosenbrock, {:.0} \
+         quasi-steady, {:.1} unloadings; per strip {:.1} RK4",
         per(c.stiff_steps),
         per(c.rk4),
         per(c.rk4_sub_steps),
@@ -73,6 +88,6 @@ fn print_counts(reps: usize) {
         per(c.rosenbrock),
         per(c.quasi_steady),
         per(c.unloadings),
-        per(c.rk4) / strips,
+        per(c.rk4) / strips.max(1.0),
     );
 }

@@ -4,7 +4,9 @@
 //! (`reference::viscoelastic`: 2·⌊max(1, −log10 TOL − 1)⌋ panels of 8
 //! points, ⌈20·10^(−log10(TOL)/2)⌉ uniform steps per strip), `gauss` the
 //! adaptive solver with the former Gauss–Legendre panel rule
-//! (`reference::viscoelastic_gauss_panels`).
+//! (`reference::viscoelastic_gauss_panels`). Built with the feature
+//! `step-counts` it also prints the strips and steps per evaluation (see
+//! `prof::print_counts`) to stderr.
 #![allow(clippy::unwrap_used)]
 use crate::arg;
 use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate, reference};
@@ -45,5 +47,7 @@ pub fn run(a: &[String]) -> Result<(), String> {
         o = eval(std::hint::black_box(&inp));
     }
     println!("{:.10} {:.10} {:.10}", o.j4, o.j5, o.j6);
+    #[cfg(feature = "step-counts")]
+    crate::prof::print_counts(reps, true);
     Ok(())
 }

@@ -168,6 +168,7 @@ fn accepted_step<const N: usize, S: Seg<N>>(
 ) -> (Step<N>, f64) {
     loop {
         *steps += 1;
+        crate::counts::count!(visco_steps);
         let stp = ros_step(seg, p, h, u, ev0, jac);
         if stp.err <= STEP_ACCEPT * atol || *steps > MAX_STEPS {
             return (stp, h);
@@ -190,6 +191,7 @@ pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
     if st.c <= 0.0 {
         return (q, 0);
     }
+    crate::counts::count!(visco_strips);
     let inter = Interior(st);
     // The largest viscous rate on this strip, ψ((3/2)·c), for
     // Cap::unload_sign (computed at the first cap step).
