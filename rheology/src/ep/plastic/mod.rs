@@ -775,10 +775,22 @@ impl Strip {
         }
         if allow_unload && q.cs > OUTLET_CS {
             let g1 = self.g_sign::<VIS>(q.sn, q.cs, q.nx, q.ny);
-            if g1 < 0.0 {
+            // With a viscous law the stress can leave the cap and come back
+            // within one step (g < 0 on a band between its ends): the dip of
+            // g's cubic Hermite interpolant over the step finds such a band.
+            let inside = if VIS && g1 >= 0.0 {
+                let (p0, q0) = (*p, *q);
+                self.cap_exit_inside::<ISO>(&p0, &q0, h, a_h)
+            } else {
+                None
+            };
+            if g1 < 0.0 || inside.is_some() {
                 // Copies for the out-of-line call, so that p and q need not
                 // live in memory on the hot path.
-                let (p0, q0) = (*p, *q);
+                let (p0, q0, h, g1) = match inside {
+                    Some((r, t, gr)) => (*p, r, t, gr),
+                    None => (*p, *q, h, g1),
+                };
                 let best = self.locate_unload::<ISO, VIS>(&p0, &q0, h, g1, a_h);
                 *acc += best.acc;
                 let l = 1.5 * self.c * best.cs;

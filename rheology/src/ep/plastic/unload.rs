@@ -55,6 +55,58 @@ impl Strip {
         }
     }
 
+    /// With a viscous law, a band inside the step from `p` to `q` (length
+    /// h, g ≥ 0 at both ends) where the stress leaves the cap: where the
+    /// cubic Hermite interpolant of g over the step (g and dg/ds at both
+    /// ends) dips below 0, the state r at its least value (the step
+    /// shortened to t), if g < 0 there: (r, t, g(r)). The start of the band
+    /// then lies between p and r ([`Strip::locate_unload`]). A band whose
+    /// dip the interpolant does not show is narrower than the step's
+    /// resolution of g, and its effect on the strip sums is of that order.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn cap_exit_inside<const ISO: bool>(
+        &self,
+        p: &PState,
+        q: &PState,
+        h: f64,
+        a_h: f64,
+    ) -> Option<(PState, f64, f64)> {
+        let law = self.vis.as_ref()?;
+        // First without the exponentials: ψ(L) ≤ ψ(3/2) makes
+        // B = g_ep − ψ(3/2)·N·cos s (N = nx² + gy·ny²) a lower bound of g;
+        // where B's interpolant stays ≥ 0 over the step, so does g's.
+        let pm = law.psi_max();
+        if pm.is_finite() {
+            let bound = |r: &PState| {
+                let ngn = r.nx * r.nx + self.gy * r.ny * r.ny;
+                let th = self.theta_rate(r.sn, r.cs, r.nx, r.ny);
+                let dngn = 2.0 * (self.gy - 1.0) * r.nx * r.ny * th;
+                let b = self.g::<false>(r.sn, r.cs, r.nx, r.ny) - pm * ngn * r.cs;
+                let db =
+                    self.g_rate::<false>(r.sn, r.cs, r.nx, r.ny) - pm * (dngn * r.cs - ngn * r.sn);
+                (b, h * db)
+            };
+            let ((b0, e0), (b1, e1)) = (bound(p), bound(q));
+            if b0 >= 0.0 && b1 >= 0.0 && hermite_min(b0, e0, b1, e1).is_none_or(|m| m.1 >= 0.0) {
+                return None;
+            }
+        }
+        let g0 = self.g::<true>(p.sn, p.cs, p.nx, p.ny);
+        let g1 = self.g::<true>(q.sn, q.cs, q.nx, q.ny);
+        let d0 = h * self.g_rate::<true>(p.sn, p.cs, p.nx, p.ny);
+        let d1 = h * self.g_rate::<true>(q.sn, q.cs, q.nx, q.ny);
+        let (u, gu) = hermite_min(g0.max(0.0), d0, g1.max(0.0), d1)?;
+        if gu >= 0.0 {
+            return None;
+        }
+        let t = u * h;
+        let (st, ct) = sin_cos_small(0.5 * t);
+        let r = self.advance::<ISO>(p, t, ct, st, a_h, None);
+        let gr = self.g::<true>(r.sn, r.cs, r.nx, r.ny);
+        (gr < 0.0).then_some((r, t, gr))
+    }
+
     /// The state where unloading begins inside the step of length `h` from
     /// `p` to `q` (g ≥ 0 at its start, g = `g1` < 0 at its end), found on the
     /// integrated g of the step shortened to t: the first t is the root of
@@ -129,6 +181,36 @@ impl Strip {
     }
 }
 
+/// Least value in (0, 1) of the cubic Hermite interpolant with values g0, g1
+/// and derivatives d0, d1 at 0 and 1, and where it is taken (None if the
+/// interpolant has no interior minimum below both ends).
+fn hermite_min(g0: f64, d0: f64, g1: f64, d1: f64) -> Option<(f64, f64)> {
+    // G(u) = g0 + d0·u + c2·u² + c3·u³, G'(u) = d0 + 2·c2·u + 3·c3·u².
+    let c2 = 3.0 * (g1 - g0) - 2.0 * d0 - d1;
+    let c3 = 2.0 * (g0 - g1) + d0 + d1;
+    if d0 >= 0.0 && d1 <= 0.0 {
+        // Rising from 0 and falling into 1: no interior minimum.
+        return None;
+    }
+    let gu = |u: f64| g0 + u * (d0 + u * (c2 + u * c3));
+    // The roots of G', the minimum where G'' = 2·c2 + 6·c3·u > 0.
+    let (a, b, c) = (3.0 * c3, 2.0 * c2, d0);
+    let u = if a.abs() <= 1e-12 * (b.abs() + c.abs()) {
+        -c / b
+    } else {
+        let disc = b * b - 4.0 * a * c;
+        if disc < 0.0 {
+            return None;
+        }
+        let r = disc.sqrt();
+        // The root at which G'' = 2·a·u + b > 0 (numerically stable form).
+        let q = -0.5 * (b + b.signum() * r);
+        let (u1, u2) = (q / a, c / q);
+        if 2.0 * a * u1 + b > 0.0 { u1 } else { u2 }
+    };
+    (u > 0.0 && u < 1.0 && u.is_finite()).then(|| (u, gu(u)))
+}
+
 /// Root in (0, 1) of the cubic Hermite interpolant with values g0, g1 and
 /// derivatives d0, d1 at 0 and 1 (g0 ≥ 0 > g1): Newton from the
 /// regula-falsi point; NaN if an iterate leaves the interval (the caller then
@@ -153,4 +235,44 @@ fn hermite_root(g0: f64, d0: f64, g1: f64, d1: f64) -> f64 {
         }
     }
     u
+}
+
+#[cfg(test)]
+mod tests {
+    use super::hermite_min;
+
+    /// The least value of the cubic Hermite interpolant against a dense
+    /// scan of the same cubic (exact cubic arithmetic: agreement to
+    /// round-off, 1e-12), and None where it has no interior minimum.
+    #[test]
+    fn hermite_min_is_the_interpolants_least_interior_value() {
+        let cubic = |g0: f64, d0: f64, g1: f64, d1: f64, u: f64| {
+            let c2 = 3.0 * (g1 - g0) - 2.0 * d0 - d1;
+            let c3 = 2.0 * (g0 - g1) + d0 + d1;
+            g0 + u * (d0 + u * (c2 + u * c3))
+        };
+        // (g0, d0, g1, d1): a dip below 0 between positive ends, a shallow
+        // dip, a dip near an end, a quadratic (c3 = 0).
+        for (g0, d0, g1, d1) in [
+            (0.3, -2.0, 0.2, 1.5),
+            (1.0, -0.5, 1.0, 0.5),
+            (0.05, -0.4, 2.0, 3.0),
+            (1.0, -2.0, 1.0, 2.0),
+        ] {
+            let (u, m) = hermite_min(g0, d0, g1, d1).expect("an interior minimum");
+            let scan = (1..10_000)
+                .map(|i| cubic(g0, d0, g1, d1, i as f64 / 10_000.0))
+                .fold(f64::INFINITY, f64::min);
+            assert!((m - cubic(g0, d0, g1, d1, u)).abs() <= 1e-12);
+            assert!(m <= scan + 1e-12 && scan - m <= 1e-6, "{m} against {scan}");
+        }
+        // Rising from the start, falling into the end, or monotone: none.
+        for (g0, d0, g1, d1) in [
+            (0.1, 1.0, 0.2, -1.0),
+            (0.0, 1.0, 1.0, 1.0),
+            (1.0, -1.0, 0.0, -1.0),
+        ] {
+            assert!(hermite_min(g0, d0, g1, d1).is_none());
+        }
+    }
 }
