@@ -14,6 +14,13 @@ use super::rules::sin_cos_small;
 /// Largest number of iterations (integrations of the step) locating the
 /// start of unloading.
 const UNLOAD_ITERATIONS: usize = 6;
+/// The same for a viscoelastic cap's exit, where ψ(L) makes g steep and
+/// curved (sinh of L/Z0): with 6, k = 3.96, J = (0.0353, 84.9, 0),
+/// D = 0.0249, Z0 = 0.312 at tol 1e-3 stopped at g = −53 (g rising from
+/// 1.3 to far below 0 over one exponential step), the exit 0.28 rad late
+/// in σ and the contact 2.2·tol off (docs/decisions/0119). The bracket
+/// (regula falsi, Illinois) converges within these.
+const UNLOAD_ITERATIONS_VIS: usize = 24;
 /// Largest number of Newton steps on the cubic Hermite interpolant of g over
 /// a step (its root is the first iterate locating unloading; only scalar
 /// arithmetic, no integration).
@@ -114,7 +121,8 @@ impl Strip {
     /// ends, [`Strip::g_rate`]), the next ones Newton steps with the exact
     /// dg/ds of the state reached, each kept inside the bracket (regula
     /// falsi, Illinois, where it would leave it); at most
-    /// [`UNLOAD_ITERATIONS`] integrations or until |g| < [`UNLOAD_G_TOL`] or
+    /// [`UNLOAD_ITERATIONS`] integrations ([`UNLOAD_ITERATIONS_VIS`] for a
+    /// viscoelastic cap's exit) or until |g| < [`UNLOAD_G_TOL`] or
     /// the next Newton correction is below [`UNLOAD_ROOT_PER_STEP4`]·s_step⁴
     /// (s_step = `a_h`/TURN_PER_STEP). Two integrations (|g| ≈ 1e-8, then
     /// round-off) without the last criterion, where regula falsi alone took
@@ -141,7 +149,12 @@ impl Strip {
             g1,
             h * self.g_rate::<VIS>(q.sn, q.cs, q.nx, q.ny),
         ) * h;
-        for _ in 0..UNLOAD_ITERATIONS {
+        let iterations = if VIS {
+            UNLOAD_ITERATIONS_VIS
+        } else {
+            UNLOAD_ITERATIONS
+        };
+        for _ in 0..iterations {
             let t = if newton > tl && newton < th {
                 newton
             } else if gl - gh > 0.0 {
