@@ -859,6 +859,42 @@ fn viscoelastic_cap_exit_is_located_where_g_falls_steeply() {
 }
 
 #[test]
+fn viscoelastic_entry_onto_an_empty_cap_is_retaken_shorter() {
+    // High spin with side slip at small D: the viscous rate at the limit
+    // nearly balances the slip, so whether the stress can stay on the cap
+    // at an entry depends on where the entry is and on the stress direction
+    // there. A long interior step (0.42 rad) entered the cap 0.009 rad
+    // early, where g = −6: the cap ended where it began, the interior
+    // re-entered at once, and after a second such switch the stress stayed
+    // inside until 0.29 rad past the true entry. The contact was 4.9·tol
+    // off at tol 1e-3 (3.6 at 3e-3, 1.4 at 3e-4). An interior step whose
+    // entry meets an empty cap is now retaken at half its length
+    // (docs/decisions/0119). Against tol 1e-6: measured 0.01, 0.02, 0.03
+    // and 0.02·tol at tol 1e-2, 3e-3, 1e-3 and 3e-4; 0.25·tol keeps a
+    // margin.
+    let i = inp(
+        9.3339,
+        1.1687808460538156,
+        982.0784730636004,
+        162.03345296215932,
+    );
+    let model = Model::Viscoelastic {
+        deborah: 0.011392901478637224,
+        z0: 0.32547113309351133,
+    };
+    let reference = evaluate(&i, model, Accuracy::new(1e-6).unwrap()).unwrap();
+    for tol in [1e-2, 3e-3, 1e-3, 3e-4] {
+        let o = evaluate(&i, model, Accuracy::new(tol).unwrap()).unwrap();
+        let e = dev(&o, &reference);
+        assert!(
+            e <= 0.25 * tol,
+            "tol {tol:e}: error {e:.3e} = {:.2}·tol",
+            e / tol
+        );
+    }
+}
+
+#[test]
 fn viscoelastic_kink_panels_are_refined_at_small_tol() {
     // Large side slip at small D: the strips' flow topology changes at
     // |Y| ≈ 0.62 and 0.82, inside two initial panels across Y whose

@@ -20,6 +20,12 @@ use super::segments::{Cap, Eval, Interior, Jac, Pt, Seg};
 /// Largest number of cap ↔ interior switches per strip (then the stress
 /// stays on the cap).
 const MAX_SWITCH: usize = 24;
+/// A cap that ends within this share of the interior step that entered it
+/// counts as empty (`strip_sums_topology`).
+const EMPTY_CAP: f64 = 1e-9;
+/// Largest number of times per strip an interior step whose entry met an
+/// empty cap is retaken at half its length.
+const ENTRY_RETRIES: usize = 8;
 /// Steps per strip after which steps are accepted regardless of the error
 /// estimate: guarantees termination at extreme inputs (where the tolerance
 /// is then not held).
@@ -205,6 +211,8 @@ pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
     let mut mode = Mode::Interior([0.0, 0.0]);
     let mut switches = 0;
     let mut steps = 0;
+    // Interior steps retaken shorter for an entry onto an empty cap.
+    let mut retries = 0;
     let lcap = |sn: f64| 1.5 * st.c * sn.max(0.0);
     let add = |q: &mut [f64; 3], d: &[f64; 3]| {
         for i in 0..3 {
@@ -220,6 +228,7 @@ pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
         }
         match mode {
             Mode::Interior(z) => {
+                let (p_start, q_start) = (p, q);
                 let (ev0, jac) = inter.eval_jac(p, &z);
                 let (stp, h1) = accepted_step(&inter, p, h, &z, (&ev0, &jac), atol, &mut steps);
                 let last = last && h1 == hmax;
@@ -325,6 +334,22 @@ pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
                         add(&mut q, &dq);
                         match end {
                             None => break,
+                            // The cap ended where it began: at the entry the
+                            // stress cannot stay on the cap, which the
+                            // interior step's entry and its direction decide
+                            // where the viscous rate nearly balances the
+                            // slip (a short step locates them better).
+                            Some((pu, _))
+                                if pu.s - p.s <= EMPTY_CAP * h1 && retries < ENTRY_RETRIES =>
+                            {
+                                p = p_start;
+                                q = q_start;
+                                mode = Mode::Interior(z);
+                                switches -= 1;
+                                retries += 1;
+                                h = 0.5 * h1;
+                                continue;
+                            }
                             Some((pu, zu)) => {
                                 p = pu;
                                 mode = Mode::Interior(zu);
