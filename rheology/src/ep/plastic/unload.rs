@@ -194,9 +194,9 @@ impl Strip {
     }
 }
 
-/// Least value in (0, 1) of the cubic Hermite interpolant with values g0, g1
-/// and derivatives d0, d1 at 0 and 1, and where it is taken (None if the
-/// interpolant has no interior minimum below both ends).
+/// The interior local minimum in (0, 1) of the cubic Hermite interpolant
+/// with values g0, g1 and derivatives d0, d1 at 0 and 1: where it is taken
+/// and its value (None if the interpolant has no local minimum inside).
 fn hermite_min(g0: f64, d0: f64, g1: f64, d1: f64) -> Option<(f64, f64)> {
     // G(u) = g0 + d0·u + c2·u² + c3·u³, G'(u) = d0 + 2·c2·u + 3·c3·u².
     let c2 = 3.0 * (g1 - g0) - 2.0 * d0 - d1;
@@ -221,7 +221,7 @@ fn hermite_min(g0: f64, d0: f64, g1: f64, d1: f64) -> Option<(f64, f64)> {
         let (u1, u2) = (q / a, c / q);
         if 2.0 * a * u1 + b > 0.0 { u1 } else { u2 }
     };
-    (u > 0.0 && u < 1.0 && u.is_finite()).then(|| (u, gu(u)))
+    (u > 0.0 && u < 1.0 && 2.0 * a * u + b > 0.0).then(|| (u, gu(u)))
 }
 
 /// Root in (0, 1) of the cubic Hermite interpolant with values g0, g1 and
