@@ -798,6 +798,22 @@ fn side_slip_at_small_k_scan() {
     }
 }
 
+/// Asserts that the viscoelastic model (D, Z0) at `inputs` is within
+/// `share`·tol of its value at tol 1e-6 at each of `tols`.
+fn viscoelastic_within_share(inputs: Inputs, (deborah, z0): (f64, f64), tols: &[f64], share: f64) {
+    let at = |tol: f64| viscoelastic(&inputs, deborah, z0, Accuracy::new(tol).unwrap()).unwrap();
+    let reference = at(1e-6);
+    for &tol in tols {
+        let o = at(tol);
+        let e = dev(&o, &reference);
+        assert!(
+            e <= share * tol,
+            "tol {tol:e}: error {e:.3e} = {:.2}·tol",
+            e / tol
+        );
+    }
+}
+
 #[test]
 fn viscoelastic_cap_exit_between_two_step_ends_is_found() {
     // Side slip at small D: in the middle of each strip near Y = 0 the
@@ -810,21 +826,12 @@ fn viscoelastic_cap_exit_between_two_step_ends_is_found() {
     // (docs/decisions/0119). Against tol 1e-6 (itself within 1.5e-7 of tol
     // 1e-8): measured 0.01, 0.04 and 0.02·tol at tol 1e-2, 1e-3, 1e-4;
     // 0.25·tol keeps a margin for the reference and for other builds.
-    let i = inp(0.7857, 4.808e-2, 145.66, 0.0);
-    let model = Model::Viscoelastic {
-        deborah: 0.0414,
-        z0: 0.411,
-    };
-    let reference = evaluate(&i, model, Accuracy::new(1e-6).unwrap()).unwrap();
-    for tol in [1e-2, 1e-3, 1e-4] {
-        let o = evaluate(&i, model, Accuracy::new(tol).unwrap()).unwrap();
-        let e = dev(&o, &reference);
-        assert!(
-            e <= 0.25 * tol,
-            "tol {tol:e}: error {e:.3e} = {:.2}·tol",
-            e / tol
-        );
-    }
+    viscoelastic_within_share(
+        inp(0.7857, 4.808e-2, 145.66, 0.0),
+        (0.0414, 0.411),
+        &[1e-2, 1e-3, 1e-4],
+        0.25,
+    );
 }
 
 #[test]
@@ -836,26 +843,17 @@ fn viscoelastic_cap_exit_is_located_where_g_falls_steeply() {
     // viscoelastic cap's exit now takes up to 24 (docs/decisions/0119).
     // Against tol 1e-6 (within 1e-7 of tol 1e-8): measured 0.03, 0.05 and
     // 0.14·tol at tol 1e-2, 3e-3 and 1e-3; 0.5·tol keeps a margin.
-    let i = inp(
-        3.962426411015227,
-        0.03531237724751588,
-        84.92099292467957,
-        0.0,
+    viscoelastic_within_share(
+        inp(
+            3.962426411015227,
+            0.03531237724751588,
+            84.92099292467957,
+            0.0,
+        ),
+        (0.02489741200914811, 0.312048004215468),
+        &[1e-2, 3e-3, 1e-3],
+        0.5,
     );
-    let model = Model::Viscoelastic {
-        deborah: 0.02489741200914811,
-        z0: 0.312048004215468,
-    };
-    let reference = evaluate(&i, model, Accuracy::new(1e-6).unwrap()).unwrap();
-    for tol in [1e-2, 3e-3, 1e-3] {
-        let o = evaluate(&i, model, Accuracy::new(tol).unwrap()).unwrap();
-        let e = dev(&o, &reference);
-        assert!(
-            e <= 0.5 * tol,
-            "tol {tol:e}: error {e:.3e} = {:.2}·tol",
-            e / tol
-        );
-    }
 }
 
 #[test]
@@ -872,26 +870,17 @@ fn viscoelastic_entry_onto_an_empty_cap_is_retaken_shorter() {
     // (docs/decisions/0119). Against tol 1e-6: measured 0.01, 0.02, 0.03
     // and 0.02·tol at tol 1e-2, 3e-3, 1e-3 and 3e-4; 0.25·tol keeps a
     // margin.
-    let i = inp(
-        9.3339,
-        1.1687808460538156,
-        982.0784730636004,
-        162.03345296215932,
+    viscoelastic_within_share(
+        inp(
+            9.3339,
+            1.1687808460538156,
+            982.0784730636004,
+            162.03345296215932,
+        ),
+        (0.011392901478637224, 0.32547113309351133),
+        &[1e-2, 3e-3, 1e-3, 3e-4],
+        0.25,
     );
-    let model = Model::Viscoelastic {
-        deborah: 0.011392901478637224,
-        z0: 0.32547113309351133,
-    };
-    let reference = evaluate(&i, model, Accuracy::new(1e-6).unwrap()).unwrap();
-    for tol in [1e-2, 3e-3, 1e-3, 3e-4] {
-        let o = evaluate(&i, model, Accuracy::new(tol).unwrap()).unwrap();
-        let e = dev(&o, &reference);
-        assert!(
-            e <= 0.25 * tol,
-            "tol {tol:e}: error {e:.3e} = {:.2}·tol",
-            e / tol
-        );
-    }
 }
 
 #[test]
@@ -903,26 +892,17 @@ fn viscoelastic_kink_panels_are_refined_at_small_tol() {
     // panel holding a kink is now refined at tol ≤ 3e-4
     // (docs/decisions/0119). Against tol 1e-6: measured 0.03·tol at 3e-4
     // and 1e-4; 0.25·tol keeps a margin.
-    let i = inp(
-        8.048754151971476,
-        -0.043618483080038496,
-        24.34467381248092,
-        0.011115062383883028,
+    viscoelastic_within_share(
+        inp(
+            8.048754151971476,
+            -0.043618483080038496,
+            24.34467381248092,
+            0.011115062383883028,
+        ),
+        (0.11098268084062536, 1.320300433792329),
+        &[3e-4, 1e-4],
+        0.25,
     );
-    let model = Model::Viscoelastic {
-        deborah: 0.11098268084062536,
-        z0: 1.320300433792329,
-    };
-    let reference = evaluate(&i, model, Accuracy::new(1e-6).unwrap()).unwrap();
-    for tol in [3e-4, 1e-4] {
-        let o = evaluate(&i, model, Accuracy::new(tol).unwrap()).unwrap();
-        let e = dev(&o, &reference);
-        assert!(
-            e <= 0.25 * tol,
-            "tol {tol:e}: error {e:.3e} = {:.2}·tol",
-            e / tol
-        );
-    }
 }
 
 #[test]

@@ -87,8 +87,12 @@ impl Strip {
         if pm.is_finite() {
             let bound = |r: &PState| {
                 let ngn = r.nx * r.nx + self.gy * r.ny * r.ny;
-                let th = self.theta_rate(r.sn, r.cs, r.nx, r.ny);
-                let dngn = 2.0 * (self.gy - 1.0) * r.nx * r.ny * th;
+                // dN/ds = 2(gy − 1)·nx·ny·θ' (0 for an isotropic stiffness).
+                let dngn = if self.gy == 1.0 {
+                    0.0
+                } else {
+                    2.0 * (self.gy - 1.0) * r.nx * r.ny * self.theta_rate(r.sn, r.cs, r.nx, r.ny)
+                };
                 let b = self.g::<false>(r.sn, r.cs, r.nx, r.ny) - pm * ngn * r.cs;
                 let db =
                     self.g_rate::<false>(r.sn, r.cs, r.nx, r.ny) - pm * (dngn * r.cs - ngn * r.sn);
