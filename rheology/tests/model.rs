@@ -747,10 +747,13 @@ fn wide_range_scan(viscoelastic: bool, seed: u64, n: usize) -> [f64; 3] {
 }
 
 #[test]
-#[ignore = "12 000 elastic/plastic cases of the whole input range, about 30 s: \
+#[ignore = "15 000 elastic/plastic cases of the whole input range, about 1 min: \
             cargo test -p traction-rheology --release --test model wide_range -- --ignored --nocapture"]
 fn wide_range_scan_elastic_plastic() {
-    for seed in 2..=5 {
+    // Seed 30 holds the wide panel of
+    // `kink_split_on_a_wide_panel_is_located_near_the_kink` (1.16·tol
+    // before its fix; now 0.49).
+    for seed in [2, 3, 4, 5, 30] {
         assert!(wide_range_scan(false, seed, 3000).iter().all(|&e| e <= 1.0));
     }
 }
@@ -795,6 +798,34 @@ fn side_slip_at_small_k_scan() {
         }
         println!("seed {seed}: worst error/tol {:.3} ({})", worst.0, worst.1);
         assert!(worst.0 <= 1.0);
+    }
+}
+
+#[test]
+fn kink_split_on_a_wide_panel_is_located_near_the_kink() {
+    // Small spin and side slip at small k: one initial panel across Y spans
+    // φ from the pole (≈ 0) to the contact's edge, and an unloading vanishes
+    // at φ = 0.466. Its margin is −0.13 at the pole, steep near the kink and
+    // 3/2 at the edge, so regula falsi kept the edge and split at 0.317; the
+    // panel left holding the kink was accepted at a third of its error and
+    // the contact was 1.17·tol off at tol 1e-4 (seed 30 of the whole-range
+    // scan). The located points now keep a quarter of their bracket from
+    // its ends (docs/decisions/0120). Against tol 1e-7: measured 0.10·tol
+    // at 1e-4; 0.5·tol keeps a margin and fails the former rule.
+    let i = inp(
+        0.1439,
+        2.704211520851383e-5,
+        0.020058223474608693,
+        -0.4607708192021948,
+    );
+    let reference = ep(&i, 1e-7);
+    for tol in [3e-4, 1e-4] {
+        let e = dev(&ep(&i, tol), &reference);
+        assert!(
+            e <= 0.5 * tol,
+            "tol {tol:e}: error {e:.3e} = {:.2}·tol",
+            e / tol
+        );
     }
 }
 
