@@ -887,6 +887,85 @@ fn viscoelastic_cap_exit_is_located_where_g_falls_steeply() {
     );
 }
 
+/// Large side slip at small D (seeds 32 and 35 of
+/// `viscoelastic_side_slip_small_deborah_scan`): a band of another flow
+/// topology (cap entry, exit and re-entry; φ 0.926–0.978 and 0.869–0.950)
+/// lies between two nodes of the initial panel [π/4, π/2] across Y.
+const VISCO_BAND_CASES: [([f64; 4], f64, f64); 2] = [
+    (
+        [
+            0.433194484357755,
+            0.0,
+            4.236242470946513,
+            0.006032789078824766,
+        ],
+        0.13561007212121673,
+        3.20164881059288,
+    ),
+    (
+        [
+            0.25999665086735607,
+            0.0,
+            3.508507368097616,
+            0.012862901239536921,
+        ],
+        0.1303013989447137,
+        f64::INFINITY,
+    ),
+];
+
+#[test]
+fn viscoelastic_band_between_panel_nodes_is_predicted_from_strip_margins() {
+    // No node saw the band: the contact was 1.14 and 1.05·tol off at tol
+    // 1e-4. The strips' closest approaches of |Z| to the cap, extrapolated
+    // between nodes, now predict it and refine the panel
+    // (docs/decisions/0121). Against tol 1e-6: measured 0.007 and
+    // 0.051·tol at 1e-4, 0.016 and 0.034 at 3e-4; 0.25·tol keeps a margin.
+    for ([k, j1, j2, j3], deborah, z0) in VISCO_BAND_CASES {
+        viscoelastic_within_share(inp(k, j1, j2, j3), (deborah, z0), &[3e-4, 1e-4], 0.25);
+    }
+}
+
+#[test]
+fn viscoelastic_band_refinement_is_continuous_along_a_line() {
+    // D through the band cases at tol 1e-4, the band crossing the panels'
+    // nodes along the way. Relative steps of 1e-3 (300 points): second
+    // differences measured 0.026 and 0.12·tol, against 0.60 and 0.60 while
+    // a band was refined only once a node saw it (at that spacing smooth
+    // stretches contribute too). The largest left is a jump: at
+    // D = 0.1303·(1 − 0.029) in the second case a node of a refined panel
+    // enters the band, and the panel's kink rule takes over from the
+    // prediction. Through it at relative steps of 3e-5, where smooth
+    // stretches contribute ≈ 1e-6·tol, the jump measures 0.085·tol, within
+    // the tol/10 asked of every discrete decision (docs/decisions/0121).
+    let tol = 1e-4;
+    let second_differences = |i: &Inputs, d0: f64, z0: f64, step: f64, n: usize| {
+        let v: Vec<Outputs> = (0..n)
+            .map(|j| {
+                let d = d0 * (1.0 + step * (j as f64 - 0.5 * n as f64));
+                viscoelastic(i, d, z0, Accuracy::new(tol).unwrap()).unwrap()
+            })
+            .collect();
+        v.windows(3)
+            .map(|w| {
+                let d2 = |f: fn(&Outputs) -> f64| (f(&w[2]) - 2.0 * f(&w[1]) + f(&w[0])).abs();
+                d2(|o| o.j4).max(d2(|o| o.j5)).max(d2(|o| o.j6))
+            })
+            .fold(0.0, f64::max)
+    };
+    for ([k, j1, j2, j3], deborah, z0) in VISCO_BAND_CASES {
+        let m = second_differences(&inp(k, j1, j2, j3), deborah, z0, 1e-3, 300);
+        assert!(
+            m <= 0.2 * tol,
+            "D = {deborah}: second difference {:.3}·tol",
+            m / tol
+        );
+    }
+    let ([k, j1, j2, j3], deborah, z0) = VISCO_BAND_CASES[1];
+    let m = second_differences(&inp(k, j1, j2, j3), deborah * (1.0 - 0.029), z0, 3e-5, 60);
+    assert!(m <= 0.1 * tol, "second difference {:.3}·tol", m / tol);
+}
+
 #[test]
 fn viscoelastic_entry_onto_an_empty_cap_is_retaken_shorter() {
     // High spin with side slip at small D: the viscous rate at the limit
@@ -937,21 +1016,24 @@ fn viscoelastic_kink_panels_are_refined_at_small_tol() {
 }
 
 #[test]
-#[ignore = "1200 viscoelastic cases of large side slip and small spin at small D, a few seconds: \
+#[ignore = "3000 viscoelastic cases of large side slip and small spin at small D, a few seconds: \
             cargo test -p traction-rheology --release --test model side_slip_small_deborah -- --ignored --nocapture"]
 fn viscoelastic_side_slip_small_deborah_scan() {
     // |J2| 3–300, |J1| ≤ 0.05 and |J3| ≤ 0.015 or 0, D 0.01–0.3: in the
     // middle of the contact the stress rides at the viscous equilibrium
     // below the cap, towards the edges it stays on the cap, so the strip
     // sums have kinks in Y. Against tol 1e-6. Worst error/tol 0.25 at 1e-3
-    // and 0.47 at 1e-4; on 22 seeds 0.295 and 0.782. Before the three
+    // and 0.47 at 1e-4 on seeds 1 and 2; on seeds 1–60 0.373 and 0.583.
+    // Seeds 32, 35 and 41 were 1.14, 1.05 and 1.33·tol off at 1e-4 while
+    // a band of another flow topology between two nodes of an initial
+    // panel went unseen (docs/decisions/0121). Before the three
     // changes of docs/decisions/0119 (a cap exit between two step ends, an
     // exit located short of converging, initial panels holding a kink
     // accepted by chance) 0.83 and 1.45 here (seed 2; 0.92 before the
     // initial panels' slack of docs/decisions/0117), and on 22 seeds 2.47
     // and 1.55; 1.05 while refined panels holding such a kink were accepted
     // on their halves' Lobatto values (docs/decisions/0104).
-    for seed in 1..=2_u64 {
+    for seed in [1, 2, 32, 35, 41_u64] {
         let mut r = uniform(seed);
         let mut worst = [(0.0_f64, String::new()), (0.0, String::new())];
         for _ in 0..600 {

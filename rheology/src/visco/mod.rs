@@ -103,7 +103,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use crate::ep::{MAX_BREAKS, Scaled, adaptive_in_phi, graded_breaks, refine_share, to_j};
 pub(crate) use law::Law;
 use law::VStrip;
-use strip::{strip_sums, strip_sums_topology};
+use strip::{NO_MARGIN, strip_sums, strip_sums_margin, strip_sums_topology};
 
 /// Step error aimed at per strip step, as a multiple of the requested tol
 /// (steps are accepted up to `STEP_ACCEPT` times it, in `strip.rs`; the
@@ -172,7 +172,7 @@ fn initial_breaks(p: &Scaled, out: &mut [f64; MAX_BREAKS]) -> usize {
 pub(crate) fn solve(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f64) {
     let atol = strip_atol(tol, p.k);
     let steps = cap_steps(tol, p.k);
-    let strip_fn = |y: f64| strip_sums_topology(&VStrip::new(p.strip(y), law, steps), atol);
+    let strip_of = |y: f64| VStrip::new(p.strip(y), law, steps);
     let (breaks, nb) = panel_edges(p);
     // Without longitudinal slip (a0 = 0, i.e. J1 = 0) the strip at −Y is
     // the mirror image of the strip at Y (Zx → −Zx, θ → π − θ; the sinh law
@@ -184,10 +184,29 @@ pub(crate) fn solve(p: &Scaled, law: Law, tol: f64) -> (f64, f64, f64) {
     if p.a0 == 0.0
         && let Some(i0) = breaks[..nb].iter().position(|&b| b == 0.0)
     {
-        let (_, j5, j6) = lobatto_kronrod_in_phi(&breaks[i0..nb], tol, (p.k, p.dx), strip_fn);
+        let (_, j5, j6) = panels(&breaks[i0..nb], tol, (p.k, p.dx), strip_of, atol);
         return (0.0, 2.0 * j5, 2.0 * j6);
     }
-    lobatto_kronrod_in_phi(&breaks[..nb], tol, (p.k, p.dx), strip_fn)
+    panels(&breaks[..nb], tol, (p.k, p.dx), strip_of, atol)
+}
+
+/// [`lobatto_kronrod_in_phi`] on the strips of `strip_of`, with their
+/// near-kink margins where the panels use them (tol ≤ [`KINK_REFINE_TOL`]).
+fn panels(
+    breaks: &[f64],
+    tol: f64,
+    k_dx: (f64, f64),
+    strip_of: impl Fn(f64) -> VStrip,
+    atol: f64,
+) -> (f64, f64, f64) {
+    if tol <= KINK_REFINE_TOL {
+        lobatto_kronrod_in_phi(breaks, tol, k_dx, |y| strip_sums_margin(&strip_of(y), atol))
+    } else {
+        lobatto_kronrod_in_phi(breaks, tol, k_dx, |y| {
+            let (q, t) = strip_sums_topology(&strip_of(y), atol);
+            (q, t, ())
+        })
+    }
 }
 
 /// [`solve`] with the former panel rule across Y: 4-point Gauss–Legendre
@@ -251,27 +270,58 @@ const ACCEPT: f64 = 0.5;
 /// topology (`strip::strip_sums_topology`; none for the empty strips at
 /// Y = ±1).
 #[derive(Clone, Copy)]
-struct Node {
+struct Node<M: Margin> {
     v: [f64; 4],
     topology: Option<u32>,
+    /// The strip's near-kink margin (`strip::strip_sums_margin`; NO_MARGIN
+    /// for the empty strips), or nothing where the panels do not use it.
+    margin: M,
+}
+
+/// A strip's near-kink margin as the panels carry it: `f64` where they use
+/// it (tol ≤ [`KINK_REFINE_TOL`]), `()` elsewhere, so that the panels'
+/// nodes stay as small as they were without it.
+trait Margin: Copy {
+    /// Whether the panels use the margin.
+    const USED: bool;
+    /// The margin (NO_MARGIN for `()`).
+    fn value(self) -> f64;
+    /// The margin of an empty strip.
+    const EMPTY: Self;
+}
+
+impl Margin for () {
+    const USED: bool = false;
+    fn value(self) -> f64 {
+        NO_MARGIN
+    }
+    const EMPTY: Self = ();
+}
+
+impl Margin for f64 {
+    const USED: bool = true;
+    fn value(self) -> f64 {
+        self
+    }
+    const EMPTY: Self = NO_MARGIN;
 }
 
 /// The integrand at a panel's interior nodes already evaluated: its
 /// Lobatto nodes m ∓ hw/√5 (a refined panel's halves), or all five (the
 /// initial panels, evaluated before any is decided).
 #[derive(Clone, Copy)]
-enum Known {
-    Lobatto(Node, Node),
-    All(Interior),
+enum Known<M: Margin> {
+    Lobatto(Node<M>, Node<M>),
+    All(Interior<M>),
 }
 
 /// The integrand at a panel's five interior nodes: the midpoint, the
 /// Lobatto pair m ∓ hw/√5 and the Kronrod pair m ∓ hw·√(2/3).
 #[derive(Clone, Copy)]
-struct Interior {
-    fm: Node,
-    fb: (Node, Node),
-    fa: (Node, Node),
+struct Interior<M: Margin> {
+    fm: Node<M>,
+    fb: (Node<M>, Node<M>),
+    fa: (Node<M>, Node<M>),
 }
 
 /// A panel to be integrated: its ends and the integrand there, its depth,
@@ -279,14 +329,14 @@ struct Interior {
 /// its allowed change as a multiple of its width's share (1, or more where
 /// the initial panels' slack was given to it, see [`slack_factors`]).
 #[derive(Clone, Copy)]
-struct Panel {
+struct Panel<M: Margin> {
     lo: f64,
     hi: f64,
-    fl: Node,
-    fh: Node,
+    fl: Node<M>,
+    fh: Node<M>,
     depth: u32,
     weight: f64,
-    known: Known,
+    known: Known<M>,
     share: f64,
 }
 
@@ -315,9 +365,51 @@ const SLACK_SHARE: f64 = 0.5;
 /// elastic/plastic model's kink splits (docs/decisions/0094).
 const KINK_REFINE_TOL: f64 = 3e-4;
 
+/// Share of a panel refined for a band of another flow topology that its
+/// nodes' strip margins (`strip::strip_sums_margin`, at the sorted
+/// positions `at`) predict between them: each pair of neighbouring nodes
+/// with finite margins is extrapolated linearly in the direction in which
+/// the margin falls, to its zero φ*; where φ* lies before the next node
+/// in that direction (or the panel's end) the share is 1, falling to 0 by
+/// a C¹ step as φ* moves one pair spacing beyond it, so that the result
+/// stays continuous in the margins.
+fn near_band_share(at: &[f64; 7], margins: &[f64; 7]) -> f64 {
+    let mut share: f64 = 0.0;
+    for i in 0..6 {
+        let (m0, m1) = (margins[i], margins[i + 1]);
+        if !(m0.is_finite() && m1.is_finite()) || m0 == m1 {
+            continue;
+        }
+        let dx = at[i + 1] - at[i];
+        if dx <= 0.0 {
+            continue;
+        }
+        // Distance beyond the pair to the predicted zero, and to the next
+        // node (or the panel's end) in the falling direction.
+        let (dist, room) = if m1 < m0 {
+            (
+                m1 * dx / (m0 - m1),
+                if i + 2 < 7 {
+                    at[i + 2] - at[i + 1]
+                } else {
+                    0.0
+                },
+            )
+        } else {
+            (
+                m0 * dx / (m1 - m0),
+                if i >= 1 { at[i] - at[i - 1] } else { 0.0 },
+            )
+        };
+        let e = (dist - room) / dx;
+        share = share.max(1.0 - crate::ep::smooth_step(e));
+    }
+    share
+}
+
 /// Whether the strips of `nodes` differ in flow topology (the panel holds a
 /// kink of the strip sums).
-fn holds_kink(nodes: &[Node]) -> bool {
+fn holds_kink<M: Margin>(nodes: &[Node<M>]) -> bool {
     let mut t = None;
     for n in nodes {
         if let Some(x) = n.topology
@@ -358,29 +450,31 @@ fn holds_kink(nodes: &[Node]) -> bool {
 /// Lobatto nodes differ in flow topology: there the two agreed by chance
 /// (k = 1.57, J = (0, 16.1, 0), D = 0.17, Z0 = 0.59 was 1.07·tol off at tol
 /// 1e-4; test `kink_panels_are_not_accepted_by_their_halves_lobatto_values`).
-fn lobatto_kronrod_in_phi(
+fn lobatto_kronrod_in_phi<M: Margin>(
     breaks: &[f64],
     tol: f64,
     (k, dx): (f64, f64),
-    mut strip: impl FnMut(f64) -> ([f64; 3], u32),
+    mut strip: impl FnMut(f64) -> ([f64; 3], u32, M),
 ) -> (f64, f64, f64) {
     // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx).
-    let mut f = |phi: f64| -> Node {
+    let mut f = |phi: f64| -> Node<M> {
         let (y, cphi) = phi.sin_cos();
         if cphi <= 0.0 || phi.abs() >= FRAC_PI_2 {
             return Node {
                 v: [0.0; 4],
                 topology: None,
+                margin: M::EMPTY,
             };
         }
-        let (st, topology) = strip(y);
+        let (st, topology, margin) = strip(y);
         Node {
             v: [cphi * st[0], cphi * st[1], cphi * st[2], cphi * y * st[0]],
             topology: Some(topology),
+            margin,
         }
     };
     let mut total = [0.0; 4];
-    let mut stack: Vec<Panel> = Vec::with_capacity(32);
+    let mut stack: Vec<Panel<M>> = Vec::with_capacity(32);
     // The initial panels with their interior nodes, so that their
     // Lobatto–Kronrod differences are known before any is decided.
     let mut flo = f(breaks[0]);
@@ -436,14 +530,31 @@ fn lobatto_kronrod_in_phi(
         let mut d: [f64; 4] = std::array::from_fn(|i| kv[i] - lob[i]);
         // An initial panel holding a kink is refined at tol ≤ KINK_REFINE_TOL
         // whatever its two rules say (see KINK_REFINE_TOL).
-        let refine = if depth == 0
-            && tol <= KINK_REFINE_TOL
-            && holds_kink(&[fl, fh, fm, fb.0, fb.1, fa.0, fa.1])
-        {
+        let panel_nodes = [fl, fh, fm, fb.0, fb.1, fa.0, fa.1];
+        let kink = tol <= KINK_REFINE_TOL && holds_kink(&panel_nodes);
+        let mut refine = if depth == 0 && kink {
             1.0
         } else {
             refine_share(max_abs(&d), allowed, depth, MAX_DEPTH)
         };
+        // A band of another flow topology may lie between the nodes where
+        // their strips' margins, extrapolated, reach 0 (docs/decisions/0121).
+        let near = if M::USED && tol <= KINK_REFINE_TOL && !kink && depth < MAX_DEPTH {
+            let at = [
+                lo,
+                m - hw * KRO_A,
+                m - hw * LOB_B,
+                m,
+                m + hw * LOB_B,
+                m + hw * KRO_A,
+                hi,
+            ];
+            let margins = [fl, fa.0, fb.0, fm, fb.1, fa.1, fh].map(|n| n.margin.value());
+            near_band_share(&at, &margins)
+        } else {
+            0.0
+        };
+        refine = refine.max(near);
         if refine < 1.0 {
             let w = weight * (1.0 - refine);
             for i in 0..4 {
@@ -474,7 +585,7 @@ fn lobatto_kronrod_in_phi(
             let split = if kink {
                 1.0
             } else {
-                refine_share(max_abs(&d), allowed, 0, 1)
+                refine_share(max_abs(&d), allowed, 0, 1).max(near)
             };
             if split < 1.0 {
                 let w = wr * (1.0 - split);
@@ -483,16 +594,17 @@ fn lobatto_kronrod_in_phi(
                 }
             }
             if split > 0.0 {
-                let half = |lo: f64, hi: f64, fl: Node, fh: Node, fb: (Node, Node)| Panel {
-                    lo,
-                    hi,
-                    fl,
-                    fh,
-                    depth: depth + 1,
-                    weight: wr * split,
-                    known: Known::Lobatto(fb.0, fb.1),
-                    share: pn.share,
-                };
+                let half =
+                    |lo: f64, hi: f64, fl: Node<M>, fh: Node<M>, fb: (Node<M>, Node<M>)| Panel {
+                        lo,
+                        hi,
+                        fl,
+                        fh,
+                        depth: depth + 1,
+                        weight: wr * split,
+                        known: Known::Lobatto(fb.0, fb.1),
+                        share: pn.share,
+                    };
                 stack.push(half(lo, m, fl, fm, fbl));
                 stack.push(half(m, hi, fm, fh, fbr));
             }
@@ -505,7 +617,11 @@ fn lobatto_kronrod_in_phi(
 /// half-width `hw` with the integrand `ends` at its ends and `n` at its
 /// interior nodes.
 #[inline]
-fn lobatto_kronrod(hw: f64, ends: (&Node, &Node), n: &Interior) -> ([f64; 4], [f64; 4]) {
+fn lobatto_kronrod<M: Margin>(
+    hw: f64,
+    ends: (&Node<M>, &Node<M>),
+    n: &Interior<M>,
+) -> ([f64; 4], [f64; 4]) {
     let mut lob = [0.0; 4];
     let mut kv = [0.0; 4];
     for i in 0..4 {
@@ -534,8 +650,8 @@ fn lobatto_kronrod(hw: f64, ends: (&Node, &Node), n: &Interior) -> ([f64; 4], [f
 /// given slack as its excess rises from 0 is then at its allowed change,
 /// where it is accepted with or without it: the result stays continuous in
 /// the inputs.
-fn slack_factors(panels: &mut [Panel], tol: f64, max_abs: impl Fn(&[f64; 4]) -> f64) {
-    let allowed = |p: &Panel| ACCEPT * tol * (p.hi - p.lo) / PI;
+fn slack_factors<M: Margin>(panels: &mut [Panel<M>], tol: f64, max_abs: impl Fn(&[f64; 4]) -> f64) {
+    let allowed = |p: &Panel<M>| ACCEPT * tol * (p.hi - p.lo) / PI;
     let (mut slack, mut excess) = (0.0, 0.0);
     for p in panels.iter_mut() {
         // The panel's excess, until the shares are set below.

@@ -191,12 +191,53 @@ pub(crate) fn strip_sums(st: &VStrip, atol: f64) -> [f64; 3] {
 
 /// [`strip_sums`] and the strip's flow topology: its number of cap entries
 /// and unloadings (the strip sums have a kink in Y where it changes).
-#[allow(clippy::needless_range_loop)]
 pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
+    let (q, t, _) = strip_sums_with(st, atol, false);
+    (q, t)
+}
+
+/// [`strip_sums_topology`] and the strip's near-kink margin: the least
+/// closest approach of the interior stress to the cap, 1 − |Z|/L at the
+/// interior minima of its samples at the interior steps' ends (each the
+/// vertex of the parabola through the three samples about it). It goes to
+/// 0 where |Z| touches L and a cap entry and exit appear on the strip, so
+/// a band of another flow topology lies near in Y where it falls
+/// ([`NO_MARGIN`] where the strip has no such minimum). Measured on the
+/// strips next to such bands (docs/decisions/0121): about linear in φ
+/// there (0.093, 0.050, 0.025 at φ = 0.785, 0.857, 0.894 before a band at
+/// 0.926).
+pub(crate) fn strip_sums_margin(st: &VStrip, atol: f64) -> ([f64; 3], u32, f64) {
+    strip_sums_with(st, atol, true)
+}
+
+/// The margin of a strip without an interior minimum of 1 − |Z|/L
+/// ([`strip_sums_margin`]).
+pub(crate) const NO_MARGIN: f64 = f64::INFINITY;
+
+/// The vertex value of the parabola through (s, d) at three points, where
+/// the middle one is the least.
+fn parabola_min([(s0, d0), (s1, d1), (s2, d2)]: [(f64, f64); 3]) -> f64 {
+    let f01 = (d1 - d0) / (s1 - s0);
+    let f12 = (d2 - d1) / (s2 - s1);
+    let a = (f12 - f01) / (s2 - s0);
+    if a.is_nan() || a <= 0.0 {
+        return d1;
+    }
+    let sv = 0.5 * (s0 + s1) - f01 / (2.0 * a);
+    let v = d0 + f01 * (sv - s0) + a * (sv - s0) * (sv - s1);
+    v.clamp(0.0, d1)
+}
+
+#[allow(clippy::needless_range_loop)]
+fn strip_sums_with(st: &VStrip, atol: f64, with_margin: bool) -> ([f64; 3], u32, f64) {
     let mut q = [0.0; 3];
     if st.c <= 0.0 {
-        return (q, 0);
+        return (q, 0, NO_MARGIN);
     }
+    let mut margin = NO_MARGIN;
+    // The last interior step ends' (s, 1 − |Z|/L), newest last (with_margin).
+    let mut samples: [(f64, f64); 3] = [(f64::NAN, f64::NAN); 3];
+    let mut nsamples = 0;
     crate::counts::count!(visco_strips);
     let inter = Interior(st);
     // The largest viscous rate on this strip, ψ((3/2)·c), for
@@ -331,6 +372,8 @@ pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
                         // The elastic/plastic flow to the outlet or to where
                         // the stress leaves the cap.
                         let (dq, end) = cap_segment(st, p, n0, switches < MAX_SWITCH);
+                        // A new interior segment follows an exit.
+                        nsamples = 0;
                         add(&mut q, &dq);
                         match end {
                             None => break,
@@ -358,11 +401,22 @@ pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
                         }
                     } else {
                         mode = Mode::Cap(0.0, n0);
+                        nsamples = 0;
                     }
                 } else {
                     add(&mut q, &stp.dq);
                     p = p1;
                     mode = Mode::Interior(stp.u);
+                    if with_margin && l1 > 0.0 {
+                        samples = [samples[1], samples[2], (p1.s, 1.0 - r1 / l1)];
+                        nsamples += 1;
+                        if nsamples >= 3
+                            && samples[1].1 < samples[0].1
+                            && samples[1].1 < samples[2].1
+                        {
+                            margin = margin.min(parabola_min(samples));
+                        }
+                    }
                 }
                 h = h1 * factor(stp.err, atol);
             }
@@ -424,7 +478,7 @@ pub(crate) fn strip_sums_topology(st: &VStrip, atol: f64) -> ([f64; 3], u32) {
         let (a, b) = c.get();
         c.set((a + 1, b + steps));
     });
-    (q, switches as u32)
+    (q, switches as u32, margin)
 }
 
 #[cfg(test)]

@@ -564,9 +564,10 @@ fn the_initial_panels_slack_keeps_the_sum_of_allowed_changes() {
             (8.0 * phi).sin() * 1e-3,
         ],
         topology: Some(1),
+        margin: (),
     };
     let breaks = [-1.5, -1.0, -0.5, 0.1, 0.7, 1.5];
-    let mut panels: Vec<Panel> = breaks
+    let mut panels: Vec<Panel<()>> = breaks
         .windows(2)
         .map(|w| {
             let (m, hw) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
