@@ -450,6 +450,12 @@ fn holds_kink<M: Margin>(nodes: &[Node<M>]) -> bool {
 /// Lobatto nodes differ in flow topology: there the two agreed by chance
 /// (k = 1.57, J = (0, 16.1, 0), D = 0.17, Z0 = 0.59 was 1.07·tol off at tol
 /// 1e-4; test `kink_panels_are_not_accepted_by_their_halves_lobatto_values`).
+///
+/// With the strips' margins (`M = f64`, tol ≤ [`KINK_REFINE_TOL`]) a panel
+/// whose strips share one topology is also refined, and its halves skip the
+/// joint check, by the share [`near_band_share`] gives: where its nodes'
+/// margins predict a band of another topology between them, which no node
+/// sees (docs/decisions/0121).
 fn lobatto_kronrod_in_phi<M: Margin>(
     breaks: &[f64],
     tol: f64,
@@ -539,7 +545,7 @@ fn lobatto_kronrod_in_phi<M: Margin>(
         };
         // A band of another flow topology may lie between the nodes where
         // their strips' margins, extrapolated, reach 0 (docs/decisions/0121).
-        let near = if M::USED && tol <= KINK_REFINE_TOL && !kink && depth < MAX_DEPTH {
+        let near = if M::USED && !kink && depth < MAX_DEPTH {
             let at = [
                 lo,
                 m - hw * KRO_A,

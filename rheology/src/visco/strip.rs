@@ -216,7 +216,7 @@ pub(crate) const NO_MARGIN: f64 = f64::INFINITY;
 
 /// The vertex value of the parabola through (s, d) at three points, where
 /// the middle one is the least.
-fn parabola_min([(s0, d0), (s1, d1), (s2, d2)]: [(f64, f64); 3]) -> f64 {
+pub(super) fn parabola_min([(s0, d0), (s1, d1), (s2, d2)]: [(f64, f64); 3]) -> f64 {
     let f01 = (d1 - d0) / (s1 - s0);
     let f12 = (d2 - d1) / (s2 - s1);
     let a = (f12 - f01) / (s2 - s0);

@@ -638,3 +638,47 @@ fn the_high_spin_bench_case_takes_its_initial_panels() {
     assert!(strips <= 30, "{strips} strips");
     assert!(e <= 0.25, "error/tol {e:.3}");
 }
+
+#[test]
+fn near_band_share_extrapolates_the_margins_between_nodes() {
+    // Seven nodes 0.1 apart. Margins falling linearly to 0 at 0.45 (between
+    // the nodes at 0.4 and 0.5): the pair (0.3, 0.4) predicts the zero
+    // before the next node, so the whole panel is refined.
+    let at = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6];
+    let inf = f64::INFINITY;
+    let falling = |zero: f64| at.map(|x| if x < zero { zero - x } else { inf });
+    assert_eq!(super::near_band_share(&at, &falling(0.45)), 1.0);
+    // The same slope with its zero far beyond the panel: no share.
+    let far = at.map(|x| 2.0 - x);
+    assert_eq!(super::near_band_share(&at, &far), 0.0);
+    // Margins that rise gently away from a minimum at a node predict
+    // nothing; steeper sides would (each pair is extrapolated on its own:
+    // with 0.05 + (x − 0.3)², the pair at 0 and 0.1 gives 0.104).
+    let bowl = at.map(|x| 0.05 + 0.5 * (x - 0.3) * (x - 0.3));
+    assert_eq!(super::near_band_share(&at, &bowl), 0.0);
+    let steep = at.map(|x| 0.05 + (x - 0.3) * (x - 0.3));
+    assert!((super::near_band_share(&at, &steep) - 0.104).abs() < 1e-9);
+    // Continuous as the predicted zero moves out past the panel's end
+    // (0.6, the last node), over one node spacing.
+    let mut last = 1.0;
+    for j in 0..=200 {
+        let zero = 0.6 + 0.15 * j as f64 / 200.0;
+        let s = super::near_band_share(&at, &at.map(|x| zero - x));
+        assert!((0.0..=1.0).contains(&s) && s <= last && last - s < 0.03, "{zero}: {s}");
+        last = s;
+    }
+    assert_eq!(last, 0.0);
+}
+
+#[test]
+fn parabola_min_is_the_vertex_of_the_samples_parabola() {
+    // d = 0.2 + 3·(s − 0.47)², sampled at uneven points about its vertex.
+    let d = |s: f64| 0.2 + 3.0 * (s - 0.47) * (s - 0.47);
+    let pts = [0.3, 0.5, 0.8].map(|s| (s, d(s)));
+    assert!((super::strip::parabola_min(pts) - 0.2).abs() < 1e-14);
+    // Never below 0 nor above the least sample.
+    let steep = [(0.0, 1.0), (0.1, 0.01), (0.2, 1.0)];
+    let v = super::strip::parabola_min(steep);
+    assert!((0.0..=0.01).contains(&v));
+}
+
