@@ -368,16 +368,28 @@ const KINK_REFINE_TOL: f64 = 3e-4;
 /// Share of a panel refined for a band of another flow topology that its
 /// nodes' strip margins (`strip::strip_sums_margin`, at the sorted
 /// positions `at`) predict between them: each pair of neighbouring nodes
-/// with finite margins is extrapolated linearly in the direction in which
-/// the margin falls, to its zero φ*; where φ* lies before the next node
-/// in that direction (or the panel's end) the share is 1, falling to 0 by
-/// a C¹ step as φ* moves one pair spacing beyond it, so that the result
-/// stays continuous in the margins.
+/// with finite margins whose next node in the direction in which the
+/// margin falls has none (or is beyond the panel's end) is extrapolated
+/// linearly in that direction, to its zero φ*. Where φ* lies before that
+/// next node (or the panel's end) the share is 1, falling to 0 by a C¹
+/// step as φ* moves one pair spacing beyond it, so that the result stays
+/// continuous in the margins. A finite margin at the next node shows the
+/// margin turning up before any zero: such pairs predict nothing (they
+/// took a third of the extra strips on the random scans at tol 1e-4;
+/// docs/decisions/0121).
 fn near_band_share(at: &[f64; 7], margins: &[f64; 7]) -> f64 {
     let mut share: f64 = 0.0;
     for i in 0..6 {
         let (m0, m1) = (margins[i], margins[i + 1]);
         if !(m0.is_finite() && m1.is_finite()) || m0 == m1 {
+            continue;
+        }
+        let next = match (m1 < m0, i) {
+            (true, i) if i + 2 < 7 => margins[i + 2],
+            (false, i) if i >= 1 => margins[i - 1],
+            _ => NO_MARGIN,
+        };
+        if next.is_finite() {
             continue;
         }
         let dx = at[i + 1] - at[i];

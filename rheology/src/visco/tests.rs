@@ -651,20 +651,33 @@ fn near_band_share_extrapolates_the_margins_between_nodes() {
     // The same slope with its zero far beyond the panel: no share.
     let far = at.map(|x| 2.0 - x);
     assert_eq!(super::near_band_share(&at, &far), 0.0);
-    // Margins that rise gently away from a minimum at a node predict
-    // nothing; steeper sides would (each pair is extrapolated on its own:
-    // with 0.05 + (x − 0.3)², the pair at 0 and 0.1 gives 0.104).
-    let bowl = at.map(|x| 0.05 + 0.5 * (x - 0.3) * (x - 0.3));
+    // Margins that turn up again before any zero predict nothing: each
+    // falling pair's next node has a finite margin (with 0.05 + (x − 0.3)²,
+    // the pair at 0 and 0.1 alone would give 0.104).
+    let bowl = at.map(|x| 0.05 + (x - 0.3) * (x - 0.3));
     assert_eq!(super::near_band_share(&at, &bowl), 0.0);
-    let steep = at.map(|x| 0.05 + (x - 0.3) * (x - 0.3));
-    assert!((super::near_band_share(&at, &steep) - 0.104).abs() < 1e-9);
+    // Falling towards nodes without a margin (the band), and its mirror.
+    let mut edge = bowl;
+    edge[5] = inf;
+    edge[6] = inf;
+    edge[4] = 0.02;
+    assert_eq!(super::near_band_share(&at, &edge), 1.0);
+    let mut mirrored = edge;
+    mirrored.reverse();
+    let at_r = at.map(|x| -x);
+    let mut at_m = at_r;
+    at_m.reverse();
+    assert_eq!(super::near_band_share(&at_m, &mirrored), 1.0);
     // Continuous as the predicted zero moves out past the panel's end
     // (0.6, the last node), over one node spacing.
     let mut last = 1.0;
     for j in 0..=200 {
         let zero = 0.6 + 0.15 * j as f64 / 200.0;
         let s = super::near_band_share(&at, &at.map(|x| zero - x));
-        assert!((0.0..=1.0).contains(&s) && s <= last && last - s < 0.03, "{zero}: {s}");
+        assert!(
+            (0.0..=1.0).contains(&s) && s <= last && last - s < 0.03,
+            "{zero}: {s}"
+        );
         last = s;
     }
     assert_eq!(last, 0.0);
@@ -681,4 +694,3 @@ fn parabola_min_is_the_vertex_of_the_samples_parabola() {
     let v = super::strip::parabola_min(steep);
     assert!((0.0..=0.01).contains(&v));
 }
-
