@@ -919,8 +919,8 @@ fn viscoelastic_band_between_panel_nodes_is_predicted_from_strip_margins() {
     // No node saw the band: the contact was 1.14 and 1.05·tol off at tol
     // 1e-4. The strips' closest approaches of |Z| to the cap, extrapolated
     // between nodes, now predict it and refine the panel
-    // (docs/decisions/0121). Against tol 1e-6: measured 0.007 and
-    // 0.051·tol at 1e-4, 0.016 and 0.034 at 3e-4; 0.25·tol keeps a margin.
+    // (docs/decisions/0121). Against tol 1e-6: measured 0.006 and
+    // 0.052·tol at 1e-4, 0.016 and 0.032 at 3e-4; 0.25·tol keeps a margin.
     for ([k, j1, j2, j3], deborah, z0) in VISCO_BAND_CASES {
         viscoelastic_within_share(inp(k, j1, j2, j3), (deborah, z0), &[3e-4, 1e-4], 0.25);
     }
