@@ -381,40 +381,25 @@ fn near_band_share(at: &[f64; 7], margins: &[f64; 7]) -> f64 {
     let mut share: f64 = 0.0;
     for i in 0..6 {
         let (m0, m1) = (margins[i], margins[i + 1]);
-        if !(m0.is_finite() && m1.is_finite()) || m0 == m1 {
-            continue;
-        }
-        let next = match (m1 < m0, i) {
-            (true, i) if i + 2 < 7 => margins[i + 2],
-            (false, i) if i >= 1 => margins[i - 1],
-            _ => NO_MARGIN,
-        };
-        if next.is_finite() {
-            continue;
-        }
         let dx = at[i + 1] - at[i];
-        if dx <= 0.0 {
+        if !(m0.is_finite() && m1.is_finite()) || m0 == m1 || dx <= 0.0 {
+            continue;
+        }
+        // The pair's lower node and the next node beyond it in the falling
+        // direction (none past the panel's end).
+        let (low, next) = if m1 < m0 {
+            (i + 1, (i + 2 < 7).then_some(i + 2))
+        } else {
+            (i, i.checked_sub(1))
+        };
+        if next.is_some_and(|n| margins[n].is_finite()) {
             continue;
         }
         // Distance beyond the pair to the predicted zero, and to the next
-        // node (or the panel's end) in the falling direction.
-        let (dist, room) = if m1 < m0 {
-            (
-                m1 * dx / (m0 - m1),
-                if i + 2 < 7 {
-                    at[i + 2] - at[i + 1]
-                } else {
-                    0.0
-                },
-            )
-        } else {
-            (
-                m0 * dx / (m1 - m0),
-                if i >= 1 { at[i] - at[i - 1] } else { 0.0 },
-            )
-        };
-        let e = (dist - room) / dx;
-        share = share.max(1.0 - crate::ep::smooth_step(e));
+        // node (0 at the panel's end).
+        let dist = margins[low] * dx / (m0 - m1).abs();
+        let room = next.map_or(0.0, |n| (at[n] - at[low]).abs());
+        share = share.max(1.0 - crate::ep::smooth_step((dist - room) / dx));
     }
     share
 }
