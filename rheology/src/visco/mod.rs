@@ -533,7 +533,8 @@ fn lobatto_kronrod_in_phi<M: Margin>(
         let mut d: [f64; 4] = std::array::from_fn(|i| kv[i] - lob[i]);
         // An initial panel holding a kink is refined at tol ≤ KINK_REFINE_TOL
         // whatever its two rules say (see KINK_REFINE_TOL).
-        let panel_nodes = [fl, fh, fm, fb.0, fb.1, fa.0, fa.1];
+        // The panel's nodes in the order of their positions.
+        let panel_nodes = [fl, fa.0, fb.0, fm, fb.1, fa.1, fh];
         let kink = tol <= KINK_REFINE_TOL && holds_kink(&panel_nodes);
         let mut refine = if depth == 0 && kink {
             1.0
@@ -552,7 +553,7 @@ fn lobatto_kronrod_in_phi<M: Margin>(
                 m + hw * KRO_A,
                 hi,
             ];
-            let margins = [fl, fa.0, fb.0, fm, fb.1, fa.1, fh].map(|n| n.margin.value());
+            let margins = panel_nodes.map(|n| n.margin.value());
             near_band_share(&at, &margins)
         } else {
             0.0
