@@ -114,12 +114,12 @@ pub fn guid() -> String {
     GUID.get_or_init(|| DOCUMENT.guid()).clone()
 }
 
-/// The complete modelDescription.xml.
+/// The complete modelDescription.xml, with the process's cached [`guid`].
 ///
 /// # Errors
 /// Only if the XML writer fails (it writes to memory, so never in practice).
 pub fn model_description_xml() -> Result<String, quick_xml::Error> {
-    DOCUMENT.xml()
+    DOCUMENT.xml_with_guid(&guid())
 }
 
 #[cfg(test)]
