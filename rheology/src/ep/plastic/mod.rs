@@ -697,8 +697,10 @@ impl Strip {
             return 0.0;
         }
         let x0 = -self.b1 / self.q2;
-        let sc = (x0 / self.c).clamp(-1.0, 1.0).asin();
-        let w = (a / (q2 * self.c * sc.cos().max(CS_MIN))).abs();
+        let xc = (x0 / self.c).clamp(-1.0, 1.0);
+        let sc = xc.asin();
+        // cos(asin xc) = √(1 − xc²).
+        let w = (a / (q2 * self.c * (1.0 - xc * xc).sqrt().max(CS_MIN))).abs();
         let cap = TURN_BOUND_DISTANCE * (sc - p.sn.asin()).hypot(w);
         if cap <= hb {
             return 0.0;
