@@ -3,7 +3,8 @@
 //! (`reference::elastic_plastic`, plain RK4) of the 307 cases below (≈ 15 s);
 //! `ep-sets errs FILE` prints `evaluate`'s worst error/tol against them per
 //! set at tol 1e-2, 1e-3, 1e-4; `ep-sets bits [TOL]` prints the results' bit
-//! patterns (compare two builds with `cmp` for bit-identical changes).
+//! patterns (compare two builds with `cmp` for bit-identical changes);
+//! `ep-sets case N [SEED]` prints the inputs of case N (the `#N` of `errs`).
 //!
 //! The cases: the bench set (7), 160 high-spin ones (k ∈ {0.5, 1, 2, 5},
 //! |J1|, |J2| ≤ 5, J3 ∈ [5, 26]), 80 wide-range ones (k 0.05–20, |J1|
@@ -110,6 +111,22 @@ pub fn run(a: &[String]) -> Result<(), String> {
             let n = v.get(8).map_or(150, |&n| n as usize);
             line(v[0], [v[1], v[2], v[3]], [v[4], v[5], v[6]], n, tol)
         }
+        Some("case") => {
+            let seed = seed(a)?;
+            let n: usize = match a.get(1) {
+                Some(t) => t.parse().map_err(|_| format!("bad N `{t}`"))?,
+                None => return Err("case needs N [SEED]".to_string()),
+            };
+            let cs = cases(seed);
+            let c = cs
+                .get(n)
+                .ok_or_else(|| format!("case {n}: there are {} cases", cs.len()))?;
+            println!(
+                "k {:e} J {:e} {:e} {:e} gy {:e}",
+                c.k, c.j1, c.j2, c.j3, c.gy
+            );
+            Ok(())
+        }
         Some("bits") => {
             let tols = match a.get(1) {
                 Some(t) => vec![t.parse().map_err(|_| format!("bad TOL `{t}`"))?],
@@ -119,7 +136,7 @@ pub fn run(a: &[String]) -> Result<(), String> {
         }
         _ => Err(
             "ep-sets needs `refs FILE`, `errs FILE`, `lines [SEED [TOL]]`, \
-             `line K J1 J2 J3 D1 D2 D3 [TOL [N]]` or `bits [TOL]`"
+             `line K J1 J2 J3 D1 D2 D3 [TOL [N]]`, `case N [SEED]` or `bits [TOL]`"
                 .to_string(),
         ),
     }
