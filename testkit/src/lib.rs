@@ -101,6 +101,76 @@ impl XorShift64Star {
     }
 }
 
+/// The environment variable naming the seeds of the random scans instead of
+/// their committed ones (see [`scan_seeds`]).
+pub const SCAN_SEEDS_VAR: &str = "TRACTION_SCAN_SEEDS";
+
+/// The seeds a random scan runs: `committed`, or those named by the
+/// environment variable [`SCAN_SEEDS_VAR`] where it is set (see
+/// [`parse_seeds`]), so that a scan runs on fresh seeds without an edit.
+///
+/// # Panics
+/// If the variable is set but is not a seed list: in a scan, a mistyped
+/// list would otherwise run the committed seeds unnoticed.
+pub fn scan_seeds(committed: &[u64]) -> Vec<u64> {
+    match std::env::var(SCAN_SEEDS_VAR) {
+        Ok(list) => parse_seeds(&list).unwrap_or_else(|e| panic!("{SCAN_SEEDS_VAR}=`{list}`: {e}")),
+        Err(_) => committed.to_vec(),
+    }
+}
+
+/// The environment variable naming the tolerances of the random scans
+/// instead of their committed ones (see [`scan_tols`]).
+pub const SCAN_TOLS_VAR: &str = "TRACTION_SCAN_TOLS";
+
+/// The tolerances a random scan checks: `committed`, or the comma-separated
+/// list in the environment variable [`SCAN_TOLS_VAR`] where it is set (e.g.
+/// `7e-4,5e-5`), so that a scan checks the tolerances between its committed
+/// ones without an edit.
+///
+/// # Panics
+/// If the variable is set but is not a list of numbers in (0, 1).
+pub fn scan_tols(committed: &[f64]) -> Vec<f64> {
+    match std::env::var(SCAN_TOLS_VAR) {
+        Ok(list) => list
+            .split(',')
+            .map(|t| match t.trim().parse::<f64>() {
+                Ok(v) if v > 0.0 && v < 1.0 => v,
+                _ => panic!("{SCAN_TOLS_VAR}=`{list}`: `{t}` is not a tolerance in (0, 1)"),
+            })
+            .collect(),
+        Err(_) => committed.to_vec(),
+    }
+}
+
+/// A comma-separated list of seeds and inclusive ranges: `"3"`,
+/// `"56-75"`, `"1,4,20-23"`.
+///
+/// # Errors
+/// An empty list or item, a part that is not a `u64`, or a range whose end
+/// lies below its start.
+pub fn parse_seeds(list: &str) -> Result<Vec<u64>, String> {
+    let mut seeds = Vec::new();
+    for item in list.split(',').map(str::trim) {
+        let num = |t: &str| {
+            t.trim()
+                .parse::<u64>()
+                .map_err(|e| format!("`{t}` is not a seed: {e}"))
+        };
+        match item.split_once('-') {
+            Some((a, b)) => {
+                let (a, b) = (num(a)?, num(b)?);
+                if b < a {
+                    return Err(format!("range `{item}` ends below its start"));
+                }
+                seeds.extend(a..=b);
+            }
+            None => seeds.push(num(item)?),
+        }
+    }
+    Ok(seeds)
+}
+
 /// CSV text (a program's output, a test's input) as a header and rows of
 /// trimmed cells, read by column name. Lines starting with `#` and empty lines
 /// are skipped; cells are split at every comma (no quoting). The accessors
@@ -175,6 +245,16 @@ impl Table {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn seed_lists_name_seeds_and_inclusive_ranges() {
+        assert_eq!(parse_seeds("3"), Ok(vec![3]));
+        assert_eq!(parse_seeds("1, 4,20-23"), Ok(vec![1, 4, 20, 21, 22, 23]));
+        assert_eq!(parse_seeds("7-7"), Ok(vec![7]));
+        for bad in ["", "1,", "x", "5-3", "1-", "-2"] {
+            assert!(parse_seeds(bad).is_err(), "`{bad}` was accepted");
+        }
+    }
 
     // The generators as the tests wrote them inline before this crate: the
     // sequences must stay bit-identical so the random test cases are unchanged.
