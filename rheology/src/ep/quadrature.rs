@@ -494,6 +494,34 @@ const ACCEPT_KINK: f64 = 0.5;
 /// with 0.5).
 const ACCEPT_KINK_REFINED: f64 = 0.7;
 
+/// Least Lobatto–Kronrod estimate of a panel holding a kink, as a share of
+/// its Simpson–Lobatto difference (stage 1). Across a kink the rules
+/// converge algebraically, so a Lobatto–Kronrod difference far below that
+/// share of the Simpson–Lobatto one is the two rules agreeing by chance. At
+/// small spin and k (k = 0.1136, J = (−2.92e-5, 0.0333, −0.338)) each half
+/// of the contact is one initial panel holding a kink, accepted at tol
+/// 5e-4 on a difference 1/710 of its Simpson–Lobatto one and 1/6 of its
+/// error: the contact was off by 1.55·tol (0.77·tol at 1e-3). A smooth
+/// panel can show such a fall (beside the same kink: 1/1000, with an error
+/// below 1e-3 of its allowed change), so the share applies to kink panels
+/// only. 0.01 left that case at 0.13·tol at 1e-3, 0.02 at 0.04
+/// (docs/decisions/0122).
+const KINK_SIMPSON_SHARE: f64 = 0.02;
+
+/// Least estimate of the pair check of a refined panel holding a kink, as
+/// a share of the panel's own Lobatto–Kronrod difference: the halves'
+/// Lobatto values cannot be trusted to far below that share of it, however
+/// well they agree with the panel's Kronrod value (which is off too).
+/// Measured on the pair checks of the bench cases h, b, p and of the cases
+/// below, the halves' actual error was 0.02–0.67 of that difference, about
+/// 0.1 in most. k = 0.1065, J = (−2.75e-5, −0.00265, 0.382) at tol 5e-4:
+/// the halves' sum agreed with the Kronrod value within 0.99 of the allowed
+/// change, both off by about 2 of it, and the contact was off by 0.99·tol;
+/// with 0.1 0.05·tol (0.05: 0.90·tol). Case h at tol 1e-3, whose halves
+/// were off by 0.79 of the allowed change, is now refined instead: 137 k →
+/// 155 k instructions (docs/decisions/0122).
+const PAIR_KRONROD_SHARE: f64 = 0.1;
+
 /// Largest Simpson–Lobatto difference of a half, in allowed changes, at
 /// which the pair check of [`lobatto_kronrod_in_phi`] may keep its Lobatto
 /// value (docs/decisions/0080).
@@ -549,7 +577,8 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 /// 2. otherwise (blended in between, see below) its 9-point Kronrod value
 ///    is kept when it and the 5-point Lobatto value differ by less than
 ///    the allowed change (4 more strips); otherwise both halves are
-///    refined.
+///    refined. Where the strips differ in topology, the difference counts
+///    as at least KINK_SIMPSON_SHARE of stage 1's.
 ///
 /// Pair check: where a refined panel's strips (its nine and its halves'
 /// stage-1 ones) differ in flow topology, the
@@ -559,6 +588,8 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 /// a half keeps its Lobatto value in stage 1 up to PAIR_STAGE1 times its own
 /// allowed change (instead of 1): near a kink Simpson's value is far off
 /// while the Lobatto values of the halves are not (docs/decisions/0080).
+/// Their difference counts as at least PAIR_KRONROD_SHARE of the panel's
+/// own Lobatto–Kronrod difference (docs/decisions/0122).
 ///
 /// Every decision is blended (the share of the next step a C¹ step from 1
 /// to 2 times the allowed change; the pair check's share multiplies the
@@ -738,7 +769,15 @@ pub(crate) fn lobatto_kronrod_in_phi(
             d[i] = kv[i] - l5[i];
         }
         let allowed = allowed_with(kink);
-        let refine = refine_share(max_abs_j(k, dx, &d), allowed, depth, max_depth);
+        let d2 = max_abs_j(k, dx, &d);
+        // Across a kink the difference is trusted only down to a share of
+        // stage 1's (KINK_SIMPSON_SHARE).
+        let est = if kink {
+            d2.max(KINK_SIMPSON_SHARE * e1)
+        } else {
+            d2
+        };
+        let refine = refine_share(est, allowed, depth, max_depth);
         if refine < 1.0 {
             let w = weight * (1.0 - refine);
             for i in 0..4 {
@@ -759,7 +798,10 @@ pub(crate) fn lobatto_kronrod_in_phi(
                 let (vl, vr) = (lobatto5(q, &el, &nl), lobatto5(q, &er, &nr));
                 let d: [f64; 4] = std::array::from_fn(|i| vl[i] + vr[i] - kv[i]);
                 let allowed = ACCEPT_KINK * tol * (hi - lo) / PI;
-                refine_share(max_abs_j(k, dx, &d), allowed, 0, 1)
+                // The halves' values are trusted only down to a share of
+                // the panel's own difference (PAIR_KRONROD_SHARE).
+                let est = max_abs_j(k, dx, &d).max(PAIR_KRONROD_SHARE * d2);
+                refine_share(est, allowed, 0, 1)
             } else {
                 1.0
             };

@@ -352,6 +352,19 @@ struct Panel<M: Margin> {
 /// left the tolerance (1.23·tol at 1e-3).
 const SLACK_SHARE: f64 = 0.5;
 
+/// Least difference of a refined panel's halves' joint check, as a share of
+/// the panel's Lobatto–Kronrod difference: 2⁻⁶, the shrinking of the
+/// 4-point Lobatto rule's error (degree 5) on halving a smooth panel. That
+/// difference is about the panel's Lobatto error, so the halves' Lobatto
+/// values are expected to be off by that share of it, however well their sum
+/// agrees with the panel's Kronrod value (which can be off too). k = 8.96,
+/// J = (0, 0.115, −6.17), D = 0.84, Z0 = ∞: a panel 620 allowed changes
+/// apart in its two rules, its Kronrod value off by 5.8 of them, was kept
+/// at 79 % on its halves' Lobatto values, which agreed with it within 1.3,
+/// and the contact was off by 0.92, 1.33 and 1.48·tol at tol 1e-4, 7e-5 and
+/// 5e-5; now 0.09–0.14·tol (docs/decisions/0122).
+const HALVES_LOBATTO_SHARE: f64 = 1.0 / 64.0;
+
 /// Tolerance up to which an initial panel whose strips differ in flow
 /// topology (it holds a kink of the strip sums) is refined once whatever
 /// its Lobatto–Kronrod difference: across a kink both rules are off and can
@@ -447,6 +460,9 @@ fn holds_kink<M: Margin>(nodes: &[Node<M>]) -> bool {
 /// Lobatto nodes differ in flow topology: there the two agreed by chance
 /// (k = 1.57, J = (0, 16.1, 0), D = 0.17, Z0 = 0.59 was 1.07·tol off at tol
 /// 1e-4; test `kink_panels_are_not_accepted_by_their_halves_lobatto_values`).
+/// Nor where the panel is far from resolved: the check's difference counts
+/// as at least the halves' expected error, [`HALVES_LOBATTO_SHARE`] of the
+/// panel's Lobatto–Kronrod difference (docs/decisions/0122).
 ///
 /// With the strips' margins (`M = f64`, tol ≤ [`KINK_REFINE_TOL`]) a panel
 /// whose strips share one topology is also refined, and its halves skip the
@@ -569,6 +585,7 @@ fn lobatto_kronrod_in_phi<M: Margin>(
             // The halves together: the sum of their Lobatto values against
             // this panel's Kronrod value.
             let wr = weight * refine;
+            let d_parent = max_abs(&d);
             let q = 0.5 * hw;
             let (ml, mr) = (lo + q, m + q);
             let fbl = (f(ml - q * LOB_B), f(ml + q * LOB_B));
@@ -586,10 +603,13 @@ fn lobatto_kronrod_in_phi<M: Margin>(
             let kink = holds_kink(&[
                 fl, fh, fm, fb.0, fb.1, fa.0, fa.1, fbl.0, fbl.1, fbr.0, fbr.1,
             ]);
+            // The halves' joint check counts their difference as at least
+            // their expected error (HALVES_LOBATTO_SHARE).
+            let est = max_abs(&d).max(HALVES_LOBATTO_SHARE * d_parent);
             let split = if kink {
                 1.0
             } else {
-                refine_share(max_abs(&d), allowed, 0, 1).max(near)
+                refine_share(est, allowed, 0, 1).max(near)
             };
             if split < 1.0 {
                 let w = wr * (1.0 - split);
