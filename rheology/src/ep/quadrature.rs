@@ -512,9 +512,9 @@ const KINK_SIMPSON_SHARE: f64 = 0.02;
 /// a share of the panel's own Lobatto–Kronrod difference: the halves'
 /// Lobatto values cannot be trusted to far below that share of it, however
 /// well they agree with the panel's Kronrod value (which is off too).
-/// Measured on the pair checks of the bench cases h, b, p and of the cases
-/// below, the halves' actual error was 0.02–0.67 of that difference, about
-/// 0.1 in most. k = 0.1065, J = (−2.75e-5, −0.00265, 0.382) at tol 5e-4:
+/// Measured on the pair checks of the bench cases h, b, p and of the
+/// failing cases of docs/decisions/0122, the halves' actual error was
+/// 0.02–0.67 of that difference, about 0.1 in most. k = 0.1065, J = (−2.75e-5, −0.00265, 0.382) at tol 5e-4:
 /// the halves' sum agreed with the Kronrod value within 0.99 of the allowed
 /// change, both off by about 2 of it, and the contact was off by 0.99·tol;
 /// with 0.1 0.05·tol (0.05: 0.90·tol). Case h at tol 1e-3, whose halves
