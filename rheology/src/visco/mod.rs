@@ -552,10 +552,11 @@ fn lobatto_kronrod_in_phi<M: Margin>(
         // The panel's nodes in the order of their positions.
         let panel_nodes = [fl, fa.0, fb.0, fm, fb.1, fa.1, fh];
         let kink = tol <= KINK_REFINE_TOL && holds_kink(&panel_nodes);
+        let d_panel = max_abs(&d);
         let mut refine = if depth == 0 && kink {
             1.0
         } else {
-            refine_share(max_abs(&d), allowed, depth, MAX_DEPTH)
+            refine_share(d_panel, allowed, depth, MAX_DEPTH)
         };
         // A band of another flow topology may lie between the nodes where
         // their strips' margins, extrapolated, reach 0 (docs/decisions/0121).
@@ -585,7 +586,6 @@ fn lobatto_kronrod_in_phi<M: Margin>(
             // The halves together: the sum of their Lobatto values against
             // this panel's Kronrod value.
             let wr = weight * refine;
-            let d_parent = max_abs(&d);
             let q = 0.5 * hw;
             let (ml, mr) = (lo + q, m + q);
             let fbl = (f(ml - q * LOB_B), f(ml + q * LOB_B));
@@ -605,7 +605,7 @@ fn lobatto_kronrod_in_phi<M: Margin>(
             ]);
             // The halves' joint check counts their difference as at least
             // their expected error (HALVES_LOBATTO_SHARE).
-            let est = max_abs(&d).max(HALVES_LOBATTO_SHARE * d_parent);
+            let est = max_abs(&d).max(HALVES_LOBATTO_SHARE * d_panel);
             let split = if kink {
                 1.0
             } else {
