@@ -14,9 +14,11 @@
 //! `errs FILE SEED` draw the 300 random cases from another seed (more
 //! cases of the same distributions for a change of the adaptive rules).
 //!
-//! `ep-sets lines [SEED [TOL]]` prints the largest second difference of
+//! `ep-sets lines [SEED [TOL [H]]]` prints the largest second difference of
 //! J4, J5, J6 (in units of tol, default 1e-3) along random lines of 150
-//! points 1e-4 apart in J (random unit directions), 60 through high-spin
+//! points 1e-4 apart in J (random unit directions; with H, the same
+//! stretch at spacing H ≤ 1e-4: a jump keeps its size as H shrinks, a kink
+//! shrinks like H, a smooth stretch like H²), 60 through high-spin
 //! points (k ∈ {0.5, 1, 2, 5}, |J1|, |J2| ≤ 5, J3 ∈ [2, 26]), 60
 //! through wide-range ones (k 0.05–20 log-uniform, |J1| ≤ 20, |J2| ≤ 3,
 //! |J3| ≤ 100) and 60 at small k and small spin (k 0.06–0.15, |J1|,
@@ -24,9 +26,9 @@
 //! differences up to 0.9·tol at tol 1e-4; the first two sets are drawn
 //! first, so they are as before): tolerance-driven jumps show up at their full size, a kink
 //! of the model at ≲ 1e-5; the worst line's start and direction are printed
-//! in full for `ep-sets line K J1 J2 J3 D1 D2 D3 [TOL [N]]`, which prints
-//! the second differences (in units of tol) at each of N points (default
-//! 150) 1e-4 apart along J + i·1e-4·D.
+//! in full for `ep-sets line K J1 J2 J3 D1 D2 D3 [TOL [N [H]]]`, which
+//! prints the second differences (in units of tol) at each of N points
+//! (default 150) H (default 1e-4) apart along J + i·H·D.
 #![allow(clippy::unwrap_used)]
 use traction_rheology::reference::elastic_plastic;
 use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate};
@@ -100,7 +102,11 @@ pub fn run(a: &[String]) -> Result<(), String> {
             let tol = a.get(2).map_or(Ok(1e-3), |t| {
                 t.parse().map_err(|_| format!("bad TOL `{t}`"))
             })?;
-            lines(seed, tol)
+            let h = a.get(3).map_or(Ok(1e-4), |t| match t.parse::<f64>() {
+                Ok(h) if h > 0.0 && h <= 1e-4 => Ok(h),
+                _ => Err(format!("bad H `{t}` (0 < H ≤ 1e-4)")),
+            })?;
+            lines(seed, tol, h)
         }
         Some("line") => {
             let v: Vec<f64> = a[1..]
@@ -108,11 +114,15 @@ pub fn run(a: &[String]) -> Result<(), String> {
                 .map(|t| t.parse().map_err(|_| format!("bad number `{t}`")))
                 .collect::<Result<_, _>>()?;
             if v.len() < 7 {
-                return Err("line needs K J1 J2 J3 D1 D2 D3 [TOL [N]]".to_string());
+                return Err("line needs K J1 J2 J3 D1 D2 D3 [TOL [N [H]]]".to_string());
             }
             let tol = v.get(7).copied().unwrap_or(1e-3);
             let n = v.get(8).map_or(150, |&n| n as usize);
-            line(v[0], [v[1], v[2], v[3]], [v[4], v[5], v[6]], n, tol)
+            let h = v.get(9).copied().unwrap_or(1e-4);
+            if !(h > 0.0 && h.is_finite()) {
+                return Err(format!("bad H `{h}` (H > 0)"));
+            }
+            line(v[0], [v[1], v[2], v[3]], [v[4], v[5], v[6]], (h, n), tol)
         }
         Some("case") => {
             let seed = seed(a)?;
@@ -138,8 +148,8 @@ pub fn run(a: &[String]) -> Result<(), String> {
             bits(&tols)
         }
         _ => Err(
-            "ep-sets needs `refs FILE`, `errs FILE`, `lines [SEED [TOL]]`, \
-             `line K J1 J2 J3 D1 D2 D3 [TOL [N]]`, `case N [SEED]` or `bits [TOL]`"
+            "ep-sets needs `refs FILE`, `errs FILE`, `lines [SEED [TOL [H]]]`, \
+             `line K J1 J2 J3 D1 D2 D3 [TOL [N [H]]]`, `case N [SEED]` or `bits [TOL]`"
                 .to_string(),
         ),
     }
@@ -231,12 +241,12 @@ fn max_second_difference(
 }
 
 /// Second differences (per output, in units of tol) at every point of one
-/// line of `n` points 1e-4 apart.
-fn line(k: f64, p: [f64; 3], d: [f64; 3], n: usize, tol: f64) -> Result<(), String> {
+/// line of `n` points `h` apart.
+fn line(k: f64, p: [f64; 3], d: [f64; 3], (h, n): (f64, usize), tol: f64) -> Result<(), String> {
     let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
     let mut v = Vec::with_capacity(n);
     for i in 0..n {
-        let s = i as f64 * 1e-4;
+        let s = i as f64 * h;
         let inp = Inputs::new(k, p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2])
             .map_err(|e| e.to_string())?;
         let o = evaluate(&inp, Model::ElasticPlastic, acc).map_err(|e| e.to_string())?;
@@ -257,7 +267,9 @@ fn line(k: f64, p: [f64; 3], d: [f64; 3], n: usize, tol: f64) -> Result<(), Stri
     Ok(())
 }
 
-fn lines(seed: u64, tol: f64) -> Result<(), String> {
+fn lines(seed: u64, tol: f64, h: f64) -> Result<(), String> {
+    // The same stretch of each line (150 points 1e-4 apart) at spacing h.
+    let n = (150.0 * 1e-4 / h).round() as usize;
     let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
     let mut r = Lcg::new(seed);
     let sign = |r: &mut Lcg| if r.unit() < 0.5 { -1.0 } else { 1.0 };
@@ -291,7 +303,7 @@ fn lines(seed: u64, tol: f64) -> Result<(), String> {
             ];
             let nd = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-300);
             let d = [d[0] / nd, d[1] / nd, d[2] / nd];
-            let m = max_second_difference(k, p, d, (1e-4, 150), acc)? / tol;
+            let m = max_second_difference(k, p, d, (h, n), acc)? / tol;
             if m > worst {
                 worst = m;
                 at = format!(

@@ -7,7 +7,7 @@
 //! - `ep-batch FILE [N [TOL [REPS]]]`: per-row cost of a batch of
 //!   elastic/plastic evaluations (CSV `k,J1,J2,J3`);
 //! - `ep-sets refs|errs FILE [SEED]`, `ep-sets bits [TOL]`, `ep-sets lines
-//!   [SEED [TOL]]`, `ep-sets line K J1 J2 J3 D1 D2 D3 [TOL [N]]`: the
+//!   [SEED [TOL [H]]]`, `ep-sets line K J1 J2 J3 D1 D2 D3 [TOL [N [H]]]`: the
 //!   elastic/plastic solver against 128-panel references on 307 cases, its
 //!   results' bits, and its smoothness along random lines or one line;
 //! - `map-check K TOL N RLOG [DX GY]`: accuracy and hit rate of the rheology map on
@@ -48,15 +48,16 @@ commands:
                                   first N rows (default 2000) of a CSV k,J1,J2,J3 at TOL
                                   (default 1e-4), one thread; summary by |J3|/sqrt(k), k
                                   and |Y_p| on stderr (ep_batch.rs)
-  ep-sets refs FILE [SEED] | errs FILE [SEED] | bits [TOL] | lines [SEED [TOL]]
-        | line K J1 J2 J3 D1 D2 D3 [TOL [N]]
+  ep-sets refs FILE [SEED] | errs FILE [SEED] | bits [TOL] | lines [SEED [TOL [H]]]
+        | line K J1 J2 J3 D1 D2 D3 [TOL [N [H]]]
                                   elastic/plastic solver on 307 cases (ep_sets.rs): write
                                   128-panel references, worst error/tol per set against
                                   them (SEED: other random cases), the results' bit
-                                  patterns, the largest second differences along 120
+                                  patterns, the largest second differences along 180
                                   random lines (the worst line's start and direction in
-                                  full), or the second differences at each of N points
-                                  (default 150) 1e-4 apart along one line
+                                  full; H: the same stretches at spacing H), or the
+                                  second differences at each of N points (default 150)
+                                  H (default 1e-4) apart along one line
   map-check K TOL N RLOG [DX GY]  rheology map against evaluate at TOL/100 on N random
                                   points, |J| log-uniform in [0.1, 10^(RLOG-1)]
   map-budget [N [TOL]]            the contact's map against direct evaluation: time and
