@@ -42,13 +42,15 @@ const ELASTIC_SAMPLES: usize = 12;
 const ELASTIC_BISECTIONS: usize = 40;
 
 impl Strip {
-    /// [`Strip::integrate_etd`] with the strip's kink margin (module docs).
+    /// [`Strip::integrate_etd_amplitude`] with the strip's kink margin
+    /// (module docs): the sums, the flow topology, the margin and the
+    /// unloading amplitude.
     pub(crate) fn integrate_etd_margin(
         &self,
         s_step: f64,
         s_step_smooth: f64,
         etd_step: f64,
-    ) -> (StripSums, u32, f64) {
+    ) -> (StripSums, u32, f64, f64) {
         let c = self.c;
         // sin s, g and dg/ds at the previous plastic state of the segment.
         let mut prev: Option<(f64, f64, f64)> = None;
@@ -56,7 +58,7 @@ impl Strip {
         let mut yield_sn = 0.0;
         let mut m = MARGIN_CAP;
         let steps = (s_step, s_step_smooth, etd_step, true);
-        let (sums, topology) = self.integrate_with(steps, &mut |e| match e {
+        let (sums, topology, amplitude) = self.integrate_with(steps, &mut |e| match e {
             Event::Plastic { x, n } => {
                 let sn = (x / c).clamp(-1.0, 1.0);
                 let cs = (1.0 - sn * sn).max(0.0).sqrt();
@@ -89,7 +91,7 @@ impl Strip {
                 m = m.min(self.elastic_margin(x0, z0, x1));
             }
         });
-        (sums, topology, m)
+        (sums, topology, m, amplitude)
     }
 
     /// The smallest L − |Z| at the interior minima of L² − |Z|² on the
@@ -162,6 +164,48 @@ fn hermite_min(g0: f64, d0: f64, g1: f64, d1: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::hermite_min;
+    use crate::ep::Scaled;
+
+    #[test]
+    fn unloading_amplitude_vanishes_at_the_kink() {
+        // k = 0.0767, J = (−0.0595, −0.0924, −0.319): the strips lose their
+        // unloading at φ ≈ 0.5176 (topology 2 → 0, the strip sums' kink).
+        // The amplitude (`Strip::integrate_etd_amplitude`) falls towards it
+        // like the margin's unloading term, and is +∞ beyond. Scanned 1e-4
+        // apart in φ: the last strip with an unloading has an amplitude
+        // below 0.01 (measured 0.0032, the margin −0.0032 there); 0.08 rad
+        // before the kink it is 0.099 (the margin −0.099).
+        let sc = Scaled::new(
+            0.07674175307335356,
+            -0.05949359508242826,
+            -0.09244197432460992,
+            -0.3190521062595738,
+            0.0,
+        );
+        let amp = |phi: f64| {
+            let st = sc.strip(f64::sin(phi));
+            let (_, t, margin, a) = st.integrate_etd_margin(0.05, 0.1, 0.0);
+            (t, margin, a)
+        };
+        let (t0, m0, a0) = amp(0.44);
+        assert_eq!(t0, 2);
+        assert!((a0 - m0.abs()).abs() < 0.05 * a0 && a0 > 0.05, "{a0} {m0}");
+        let mut last = (0.44, a0);
+        let mut phi: f64 = 0.44;
+        while phi < 0.53 {
+            phi += 1e-4;
+            let (t, _, a) = amp(phi);
+            if t != 2 {
+                assert!(a.is_infinite(), "{phi}: {a}");
+                break;
+            }
+            assert!(a <= last.1 * (1.0 + 1e-9), "{phi}: {a} after {}", last.1);
+            last = (phi, a);
+        }
+        assert!((0.51..0.525).contains(&last.0), "{last:?}");
+        println!("at 0.44: {a0} (margin {m0}); last {last:?}");
+        assert!(last.1 < 0.01, "{last:?}");
+    }
 
     #[test]
     fn hermite_min_of_a_parabola() {

@@ -335,12 +335,32 @@ impl Strip {
     /// flow topology: twice the number of unloadings, plus 1 where it ends
     /// elastic (the strip sums have a kink in Y where it changes: a plastic
     /// segment or an unloading appears or vanishes).
+    #[cfg(test)]
     pub(crate) fn integrate_etd(
         &self,
         s_step: f64,
         s_step_smooth: f64,
         etd_step: f64,
     ) -> (StripSums, u32) {
+        let (sums, topology, _) =
+            self.integrate_with((s_step, s_step_smooth, etd_step, true), &mut |_| {});
+        (sums, topology)
+    }
+
+    /// [`Strip::integrate_etd`] with the strip's unloading amplitude: the
+    /// smallest |g'(s_u)|·ℓ/6 over its unloadings (s_u where one starts, ℓ
+    /// the shorter of the plastic segment before it and the elastic
+    /// segment after it, in s; the magnitude of the kink margin's
+    /// unloading term, see `ep::kink`), which vanishes where an unloading
+    /// appears or vanishes (up to its detection at step ends, where it
+    /// appears at ≈ 0.01, see `quadrature::KINK_AMPLITUDE`); +∞ without
+    /// unloading.
+    pub(crate) fn integrate_etd_amplitude(
+        &self,
+        s_step: f64,
+        s_step_smooth: f64,
+        etd_step: f64,
+    ) -> (StripSums, u32, f64) {
         self.integrate_with((s_step, s_step_smooth, etd_step, true), &mut |_| {})
     }
 
@@ -364,19 +384,27 @@ impl Strip {
         &self,
         steps: (f64, f64, f64, bool),
         rec: &mut impl FnMut(Event),
-    ) -> (StripSums, u32) {
+    ) -> (StripSums, u32, f64) {
         crate::counts::count!(strips);
         let c = self.c;
         let mut acc = StripSums::default();
+        let mut amplitude = f64::INFINITY;
         if c <= 0.0 {
-            return (acc, 1);
+            return (acc, 1, amplitude);
         }
         let mut ends_elastic = 0;
         let mut x0 = -c;
         let mut z0 = (0.0, 0.0);
         let mut switches = 0;
+        // At an unloading: s there, the plastic segment's length before it
+        // and |g'| there.
+        let mut unload: Option<(f64, f64, f64)> = None;
         loop {
             let xy = self.find_yield(x0, z0, steps.0);
+            if let Some((s_u, plastic, rate)) = unload.take() {
+                let elastic = (xy / c).clamp(-1.0, 1.0).asin() - s_u;
+                amplitude = amplitude.min(rate * elastic.min(plastic).max(0.0) / 6.0);
+            }
             acc += self.el_sums(x0, z0, xy);
             rec(Event::Elastic { x0, z0, x1: xy });
             // c exactly where the crossing is within `OUTLET_GAP` of it.
@@ -403,13 +431,19 @@ impl Strip {
             match end {
                 PlasticEnd::Outlet => break,
                 PlasticEnd::Unload { x, z } => {
+                    let su = (x / c).clamp(-1.0, 1.0);
+                    let cu = (1.0 - su * su).max(0.0).sqrt();
+                    let mz = z.0.hypot(z.1);
+                    let rate = self.g_rate::<false>(su, cu, z.0 / mz, z.1 / mz).abs();
+                    let s_u = su.asin();
+                    unload = Some((s_u, s_u - sn.asin(), rate));
                     x0 = x;
                     z0 = z;
                     switches += 1;
                 }
             }
         }
-        (acc, 2 * switches as u32 + ends_elastic)
+        (acc, 2 * switches as u32 + ends_elastic, amplitude)
     }
 }
 

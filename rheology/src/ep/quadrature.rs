@@ -229,10 +229,12 @@ pub(crate) const MAX_BREAKS: usize = 64;
 
 /// Initial panel edges in φ (Y = sin φ): graded geometrically towards the
 /// spin pole's strip Y_p = J1/(√k·J3), where the slip's X component
-/// a = a0 − J3·Y vanishes (towards the nearer edge of the contact when Y_p
-/// lies outside it, so that the edges move continuously as the pole leaves
-/// the contact: second differences along J1 across |Y_p| = 1 at tol = 1e-3
-/// are ≤ 0.007·tol, against 0.027·tol when switching to fixed edges there).
+/// a = a0 − J3·Y vanishes, at φ = [`pole_anchor`]`(Y_p)` (asin Y_p for
+/// |Y_p| ≤ [`ANCHOR_Y`]; towards the nearer edge of the contact as Y_p
+/// nears and leaves it, so that the edges move continuously as the pole
+/// leaves the contact: second differences along J1 across |Y_p| = 1 at
+/// tol = 1e-3 are ≤ 0.007·tol, against 0.027·tol when switching to fixed
+/// edges there).
 ///
 /// Near that strip the flow pattern changes within |ΔY| ~ 1/|J3|. Starting
 /// from the two halves, a coarse panel whose 4- and 8-point values agree by
@@ -251,9 +253,39 @@ fn initial_breaks(sc: &Scaled, tol: f64, out: &mut [f64; MAX_BREAKS]) -> usize {
     // With the pole at (or beyond) an edge and w0 wider than the contact
     // (small |J3|) this is one panel from edge to edge, whose first
     // refinement is the two halves (an empty panel at the edge is skipped).
-    let pp = yp.clamp(-1.0, 1.0).asin();
+    let pp = pole_anchor(yp);
     let grading = (second_edge(tol), POLE_GRADING_GROWTH);
     graded_breaks(pp, POLE_GRADING / sc.j3.abs(), grading, out)
+}
+
+/// |Y_p| up to which the initial panels' anchor is the spin pole's strip
+/// itself, φ = asin Y_p ([`pole_anchor`]). Beyond it asin moves without
+/// bound (dφ/dY_p = 1/√(1 − Y_p²)), and every panel with it: at small k
+/// and small spin (k = 0.0768, J = (−0.0913, −0.0519, −0.331), Y_p =
+/// 0.9966) the panels swept across the strip sums' kinks at 0.014 rad per
+/// 1e-4 of J, their decisions flipping from one input to the next, and
+/// the second differences along a line 1e-4 apart reached 0.087, 0.103
+/// and 0.434·tol at tol 1e-2, 1e-3 and 1e-4; with the anchor continued
+/// linearly beyond 0.9 0.0014, 0.0055 and 0.247·tol (0.7: 0.155·tol at
+/// 1e-3 on the worst line of another seed) (docs/decisions/0123).
+const ANCHOR_Y: f64 = 0.9;
+
+/// The initial panels' anchor in φ for the spin pole's strip at Y_p:
+/// asin Y_p for |Y_p| ≤ [`ANCHOR_Y`], beyond it continued with asin's slope
+/// there (C¹) up to the contact's edge (±π/2, reached at |Y_p| ≈ 1.097);
+/// NaN for NaN.
+fn pole_anchor(yp: f64) -> f64 {
+    if yp.is_nan() {
+        return yp;
+    }
+    let y = yp.abs();
+    let p = if y <= ANCHOR_Y {
+        y.asin()
+    } else {
+        let slope = 1.0 / (1.0 - ANCHOR_Y * ANCHOR_Y).sqrt();
+        (ANCHOR_Y.asin() + slope * (y - ANCHOR_Y)).min(FRAC_PI_2)
+    };
+    p.copysign(yp)
 }
 
 /// The second initial edge's distance from the pole's strip in units of the
@@ -352,17 +384,17 @@ pub(crate) fn solve_adaptive(
     let nb = initial_breaks(sc, tol, &mut breaks);
     let strip = |y: f64, margin: bool| {
         let s = sc.strip(y);
-        let (st, topology, m) = if margin {
+        let (st, topology, m, amp) = if margin {
             s.integrate_etd_margin(s_step, s_step_smooth, etd_step)
         } else {
-            let (st, topology) = s.integrate_etd(s_step, s_step_smooth, etd_step);
-            (st, topology, f64::NAN)
+            let (st, topology, amp) = s.integrate_etd_amplitude(s_step, s_step_smooth, etd_step);
+            (st, topology, f64::NAN, amp)
         };
-        ([st.ix, st.iy, st.ixy], topology, m)
+        ([st.ix, st.iy, st.ixy], (topology, amp), m)
     };
     let k_dx = (sc.k, sc.dx);
     // The pole's strip in φ (an initial edge; 0 for J1 = J3 = 0).
-    let pp = (sc.a0 / sc.j3).clamp(-1.0, 1.0).asin();
+    let pp = pole_anchor(sc.a0 / sc.j3);
     let pp = if pp.is_nan() { 0.0 } else { pp };
     if sc.a0 == 0.0
         && let Some(i0) = breaks[..nb].iter().position(|&b| b == 0.0)
@@ -522,13 +554,80 @@ const KINK_SIMPSON_SHARE: f64 = 0.02;
 /// 155 k instructions (docs/decisions/0122).
 const PAIR_KRONROD_SHARE: f64 = 0.1;
 
+/// Unloading amplitude (`Strip::integrate_etd_amplitude`) from which a
+/// panel's strips that differ in flow topology count fully as a kink
+/// ([`Gate`]). A strip's unloading is found at its step ends, so it
+/// appears with an amplitude of about 0.01 already (k = 0.073,
+/// J = (0.100, −0.097, 0.212): 0.0105), and the weight jumps by
+/// smooth_step(0.0105/KINK_AMPLITUDE) there: 0.28 with 0.03, a jump of
+/// 0.049·tol in the results at tol 1e-2 (0.115·tol with the former
+/// all-or-nothing gate). 0.1 and 0.3 took the worst line of the small-k,
+/// small-spin set (`cargo xtask ep-sets lines 4242`) to 0.023·tol at 1e-2
+/// but to 0.62 and 0.55·tol at 1e-4 (0.03: 0.43) (docs/decisions/0123).
+const KINK_AMPLITUDE: f64 = 0.03;
+
+/// The weight of a panel's kink rules (ACCEPT_KINK, KINK_SIMPSON_SHARE and
+/// the pair check) from its strips' flow topologies and unloading
+/// amplitudes: 0 where the topologies all agree; where they differ, a C¹
+/// step from 0 to 1 as the smaller of the two groups' largest amplitudes
+/// (the strips with the first strip's topology, and the others) goes from
+/// 0 to KINK_AMPLITUDE; 1 where both groups hold a strip without an
+/// unloading (amplitude +∞), e.g. where the strip starts to end elastic.
+/// A band of unloading strips born between a panel's strips, or an
+/// unloading entering it at an end, reaches a strip with an amplitude near
+/// 0, so the rules take hold continuously there instead of at once (a jump
+/// in the results, docs/decisions/0123).
+#[derive(Default)]
+struct Gate {
+    /// The first strip's topology.
+    first: Option<u32>,
+    /// The largest amplitude of the strips with that topology.
+    same: f64,
+    /// The largest amplitude of the others (None: no other topology).
+    other: Option<f64>,
+}
+
+impl Gate {
+    /// Count a strip's (topology, amplitude).
+    #[inline]
+    fn add(&mut self, (topology, amplitude): (u32, f64)) {
+        match self.first {
+            None => {
+                self.first = Some(topology);
+                self.same = amplitude;
+            }
+            Some(t) if t == topology => self.same = self.same.max(amplitude),
+            Some(_) => {
+                self.other = Some(self.other.map_or(amplitude, |o| o.max(amplitude)));
+            }
+        }
+    }
+
+    /// The weight of the kink rules, in [0, 1].
+    #[inline]
+    fn weight(&self) -> f64 {
+        match self.other {
+            None => 0.0,
+            Some(o) => {
+                let a = self.same.min(o);
+                if a.is_nan() {
+                    1.0
+                } else {
+                    smooth_step(a / KINK_AMPLITUDE)
+                }
+            }
+        }
+    }
+}
+
 /// Largest Simpson–Lobatto difference of a half, in allowed changes, at
 /// which the pair check of [`lobatto_kronrod_in_phi`] may keep its Lobatto
 /// value (docs/decisions/0080).
 const PAIR_STAGE1: f64 = 20.0;
 
-/// The integrand in φ and a strip's flow topology at a node.
-type Node = ([f64; 4], u32);
+/// The integrand in φ and a strip's (flow topology, unloading amplitude)
+/// at a node.
+type Node = ([f64; 4], (u32, f64));
 
 /// A panel: lo, hi, the nodes there, its depth, the weight of its value in
 /// the result, and, for the halves of a refined panel, the share of the
@@ -569,7 +668,8 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 /// Each panel is decided in two stages,
 /// each against the allowed change tol·width/π in J4, J5 and J6
 /// (ACCEPT_KINK times that where the panel's strips differ in topology;
-/// ACCEPT_KINK_REFINED on refined panels at tol ≤ 1e-4):
+/// ACCEPT_KINK_REFINED on refined panels at tol ≤ 1e-4; each kink rule
+/// here applies by the weight of [`Gate`]):
 ///
 /// 1. its 5-point Lobatto value is kept when it and the 3-point one
 ///    (Simpson, on the ends and the midpoint) differ by less than the
@@ -593,10 +693,12 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 ///
 /// Every decision is blended (the share of the next step a C¹ step from 1
 /// to 2 times the allowed change; the pair check's share multiplies the
-/// wider stage 1's), so that a decision adds no jump in the inputs. A change
-/// of the topology gate moves the result continuously too: it flips where a
-/// kink crosses a panel's end (its effect on the panel's value vanishing
-/// there) or appears with no amplitude. All three rules use the panel's
+/// wider stage 1's), so that a decision adds no jump in the inputs. The
+/// kink rules take hold by [`Gate`]'s weight, continuously where an
+/// unloading reaches one of the panel's strips (with the jump of its
+/// amplitude where the strip integration finds it, see
+/// [`KINK_AMPLITUDE`]); where the strips start or stop ending elastic they
+/// still take hold at once. All three rules use the panel's
 /// ends: neighbouring panels share their end strips and a panel's halves
 /// its ends and midpoint, so a panel costs 3 or 7 new strips (the strips at
 /// Y = ±1 are empty), 12 with the former rule (4-point Gauss–Legendre
@@ -612,7 +714,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
     max_depth: u32,
     (k, dx): (f64, f64),
     pole: f64,
-    mut strip: impl FnMut(f64, bool) -> ([f64; 3], u32, f64),
+    mut strip: impl FnMut(f64, bool) -> ([f64; 3], (u32, f64), f64),
 ) -> (f64, f64, f64) {
     let kink_refined = ACCEPT_KINK + fine_tol(tol) * (ACCEPT_KINK_REFINED - ACCEPT_KINK);
     let split = kink_share(tol);
@@ -625,7 +727,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
             // The empty strip (Y = ±1) has the margin of a strip with no
             // plastic segment (`Strip::integrate_etd_margin`).
             let m = if margin { MARGIN_CAP } else { f64::NAN };
-            return (([0.0; 4], 0), m);
+            return (([0.0; 4], (0, f64::INFINITY)), m);
         }
         let (st, t, m) = strip(y, margin);
         (
@@ -705,9 +807,12 @@ pub(crate) fn lobatto_kronrod_in_phi(
     while let Some((lo, hi, fl, fh, depth, weight, pair)) = stack.pop() {
         let (m, hw) = (0.5 * (lo + hi), 0.5 * (hi - lo));
         // The strips at Y = ±1 (zero width) count as any topology.
-        let ends = [(fl.1, lo), (fh.1, hi)];
-        let mut topo = ends.iter().find(|e| e.1.abs() < FRAC_PI_2).map(|e| e.0);
-        let mut kink = fl.1 != fh.1 && lo.abs() < FRAC_PI_2 && hi.abs() < FRAC_PI_2;
+        let mut gate = Gate::default();
+        for (v, e) in [(fl.1, lo), (fh.1, hi)] {
+            if e.abs() < FRAC_PI_2 {
+                gate.add(v);
+            }
+        }
         // Stage 1: the 5-point Lobatto value against the 3-point one
         // (Simpson, on the ends and the midpoint).
         let nodes = match pair {
@@ -715,23 +820,23 @@ pub(crate) fn lobatto_kronrod_in_phi(
             None => lobatto_nodes(&mut f, m, hw),
         };
         for v in &nodes {
-            kink |= *topo.get_or_insert(v.1) != v.1;
+            gate.add(v.1);
         }
         let [fm, fa, fb] = &nodes;
         let ends: [f64; 4] = std::array::from_fn(|i| fl.0[i] + fh.0[i]);
         let l5 = lobatto5(hw, &ends, &nodes);
         let mut d: [f64; 4] =
             std::array::from_fn(|i| l5[i] - hw * ((1.0 / 3.0) * ends[i] + (4.0 / 3.0) * fm.0[i]));
-        // The change allowed in this panel, with or without a kink.
-        let allowed_with = |kink: bool| {
-            let share = match (kink, depth) {
-                (false, _) => 1.0,
-                (true, 0) => ACCEPT_KINK,
-                (true, _) => kink_refined,
+        // The change allowed in this panel, by its kink weight.
+        let allowed_with = |w: f64| {
+            let share = if depth == 0 {
+                ACCEPT_KINK
+            } else {
+                kink_refined
             };
-            share * tol * (hi - lo) / PI
+            (1.0 - w * (1.0 - share)) * tol * (hi - lo) / PI
         };
-        let allowed = allowed_with(kink);
+        let allowed = allowed_with(gate.weight());
         // The share of the panel that goes on to stage 2 (blended like a
         // refinement, whatever the depth); with a passed pair check it is
         // that of the wider stage 1.
@@ -759,7 +864,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
         });
         for (t, wk) in LK_ADDED {
             let v = f(m + hw * t);
-            kink |= *topo.get_or_insert(v.1) != v.1;
+            gate.add(v.1);
             for (s, x) in kv.iter_mut().zip(v.0) {
                 *s += wk * x;
             }
@@ -768,15 +873,12 @@ pub(crate) fn lobatto_kronrod_in_phi(
             kv[i] *= hw;
             d[i] = kv[i] - l5[i];
         }
-        let allowed = allowed_with(kink);
+        let wk = gate.weight();
+        let allowed = allowed_with(wk);
         let d2 = max_abs_j(k, dx, &d);
         // Across a kink the difference is trusted only down to a share of
         // stage 1's (KINK_SIMPSON_SHARE).
-        let est = if kink {
-            d2.max(KINK_SIMPSON_SHARE * e1)
-        } else {
-            d2
-        };
+        let est = d2.max(wk * KINK_SIMPSON_SHARE * e1);
         let refine = refine_share(est, allowed, depth, max_depth);
         if refine < 1.0 {
             let w = weight * (1.0 - refine);
@@ -790,9 +892,10 @@ pub(crate) fn lobatto_kronrod_in_phi(
             let nl = lobatto_nodes(&mut f, lo + q, q);
             let nr = lobatto_nodes(&mut f, m + q, q);
             for v in nl.iter().chain(&nr) {
-                kink |= *topo.get_or_insert(v.1) != v.1;
+                gate.add(v.1);
             }
-            let split = if kink {
+            let wk = gate.weight();
+            let split = if wk > 0.0 {
                 let el: [f64; 4] = std::array::from_fn(|i| fl.0[i] + fm.0[i]);
                 let er: [f64; 4] = std::array::from_fn(|i| fm.0[i] + fh.0[i]);
                 let (vl, vr) = (lobatto5(q, &el, &nl), lobatto5(q, &er, &nr));
@@ -801,7 +904,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
                 // The halves' values are trusted only down to a share of
                 // the panel's own difference (PAIR_KRONROD_SHARE).
                 let est = max_abs_j(k, dx, &d).max(PAIR_KRONROD_SHARE * d2);
-                refine_share(est, allowed, 0, 1)
+                1.0 - wk * (1.0 - refine_share(est, allowed, 0, 1))
             } else {
                 1.0
             };

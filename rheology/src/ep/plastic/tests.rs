@@ -323,7 +323,7 @@ fn first_segment(
     steps: (f64, f64, f64, bool),
 ) -> (super::StripSums, usize, usize, f64, f64) {
     let (mut states, mut segments) = (0, 0);
-    let (e, _) = st.integrate_with(steps, &mut |ev| match ev {
+    let (e, _, _) = st.integrate_with(steps, &mut |ev| match ev {
         super::Event::Plastic { .. } if segments == 0 => states += 1,
         super::Event::Elastic { .. } if states > 0 => segments += 1,
         _ => {}
@@ -621,7 +621,7 @@ fn steps_towards_the_crossing_do_not_creep() {
     for dy in [1e-4, 3e-4, 1e-3, 3e-3, -3e-4] {
         let st = sc.strip(yp + dy);
         let mut steps = 0;
-        let (e, _) = st.integrate_with((0.1, 0.2, 0.4, true), &mut |ev| {
+        let (e, _, _) = st.integrate_with((0.1, 0.2, 0.4, true), &mut |ev| {
             if let super::Event::Plastic { .. } = ev {
                 steps += 1;
             }
