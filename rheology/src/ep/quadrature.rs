@@ -620,6 +620,19 @@ impl Gate {
     }
 }
 
+/// Share of the allowed change up to which an initial panel (depth 0) keeps
+/// its 5-point Lobatto value in stage 1. An initial panel has no coarser
+/// check: its Simpson and Lobatto values can agree by chance while both are
+/// off. k = 0.0887, J = (6.52e7, −1.07e5, −1.06e7) at tol 5e-4 (a fresh
+/// seed of the whole-range scan): the panel [−0.476, π/2] was kept at 1.2
+/// times the allowed change with its Kronrod value 3.0 times it away, and
+/// the contact was 1.76·tol off (0.000 at 4.9e-4 and 5.1e-4, where the two
+/// rules did not agree). With 0.3 and 0.1 it is 0.000·tol at 5e-4. On the
+/// 307 cases 0.3 costs +2.1 % / +2.7 % instructions at tol 1e-3 / 1e-4 and
+/// on the random batch +2.3 % / +5.4 %; 0.1 +4.2 % / +5.1 % and
+/// +5.5 % / +9.7 % (docs/decisions/0124).
+const INITIAL_STAGE1: f64 = 0.3;
+
 /// Largest Simpson–Lobatto difference of a half, in allowed changes, at
 /// which the pair check of [`lobatto_kronrod_in_phi`] may keep its Lobatto
 /// value (docs/decisions/0080).
@@ -673,7 +686,8 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 ///
 /// 1. its 5-point Lobatto value is kept when it and the 3-point one
 ///    (Simpson, on the ends and the midpoint) differ by less than the
-///    allowed change (3 new strips);
+///    allowed change (INITIAL_STAGE1 of it for an initial panel; 3 new
+///    strips);
 /// 2. otherwise (blended in between, see below) its 9-point Kronrod value
 ///    is kept when it and the 5-point Lobatto value differ by less than
 ///    the allowed change (4 more strips); otherwise both halves are
@@ -841,7 +855,12 @@ pub(crate) fn lobatto_kronrod_in_phi(
         // refinement, whatever the depth); with a passed pair check it is
         // that of the wider stage 1.
         let e1 = max_abs_j(k, dx, &d);
-        let mut go_on = refine_share(e1, allowed, 0, 1);
+        let stage1 = if depth == 0 {
+            INITIAL_STAGE1 * allowed
+        } else {
+            allowed
+        };
+        let mut go_on = refine_share(e1, stage1, 0, 1);
         if let Some(split) = pair
             && split < 1.0
             && go_on > 0.0
