@@ -42,7 +42,7 @@ const ELASTIC_SAMPLES: usize = 12;
 const ELASTIC_BISECTIONS: usize = 40;
 
 impl Strip {
-    /// [`Strip::integrate_etd_amplitude`] with the strip's kink margin
+    /// [`Strip::integrate_etd`] with the strip's kink margin
     /// (module docs): the sums, the flow topology, the margin and the
     /// unloading amplitude.
     pub(crate) fn integrate_etd_margin(
@@ -170,7 +170,7 @@ mod tests {
     fn unloading_amplitude_vanishes_at_the_kink() {
         // k = 0.0767, J = (−0.0595, −0.0924, −0.319): the strips lose their
         // unloading at φ ≈ 0.5176 (topology 2 → 0, the strip sums' kink).
-        // The amplitude (`Strip::integrate_etd_amplitude`) falls towards it
+        // The amplitude (`Strip::integrate_etd`) falls towards it
         // like the margin's unloading term, and is +∞ beyond. Scanned 1e-4
         // apart in φ: the last strip with an unloading has an amplitude
         // below 0.01 (measured 0.0032, the margin −0.0032 there); 0.08 rad

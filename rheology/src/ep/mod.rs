@@ -334,28 +334,15 @@ impl Strip {
     /// direction where κ·h is small (`Strip::turn_step`); and the strip's
     /// flow topology: twice the number of unloadings, plus 1 where it ends
     /// elastic (the strip sums have a kink in Y where it changes: a plastic
-    /// segment or an unloading appears or vanishes).
-    #[cfg(test)]
-    pub(crate) fn integrate_etd(
-        &self,
-        s_step: f64,
-        s_step_smooth: f64,
-        etd_step: f64,
-    ) -> (StripSums, u32) {
-        let (sums, topology, _) =
-            self.integrate_with((s_step, s_step_smooth, etd_step, true), &mut |_| {});
-        (sums, topology)
-    }
-
-    /// [`Strip::integrate_etd`] with the strip's unloading amplitude: the
-    /// smallest |g'(s_u)|·ℓ/6 over its unloadings (s_u where one starts, ℓ
-    /// the shorter of the plastic segment before it and the elastic
-    /// segment after it, in s; the magnitude of the kink margin's
+    /// segment or an unloading appears or vanishes); and its unloading
+    /// amplitude: the smallest |g'(s_u)|·ℓ/6 over its unloadings (s_u where
+    /// one starts, ℓ the shorter of the plastic segment before it and the
+    /// elastic segment after it, in s; the magnitude of the kink margin's
     /// unloading term, see `ep::kink`), which vanishes where an unloading
     /// appears or vanishes (up to its detection at step ends, where it
     /// appears at ≈ 0.01, see `quadrature::KINK_AMPLITUDE`); +∞ without
     /// unloading.
-    pub(crate) fn integrate_etd_amplitude(
+    pub(crate) fn integrate_etd(
         &self,
         s_step: f64,
         s_step_smooth: f64,

@@ -387,7 +387,7 @@ pub(crate) fn solve_adaptive(
         let (st, topology, m, amp) = if margin {
             s.integrate_etd_margin(s_step, s_step_smooth, etd_step)
         } else {
-            let (st, topology, amp) = s.integrate_etd_amplitude(s_step, s_step_smooth, etd_step);
+            let (st, topology, amp) = s.integrate_etd(s_step, s_step_smooth, etd_step);
             (st, topology, f64::NAN, amp)
         };
         ([st.ix, st.iy, st.ixy], (topology, amp), m)
@@ -554,7 +554,7 @@ const KINK_SIMPSON_SHARE: f64 = 0.02;
 /// 155 k instructions (docs/decisions/0122).
 const PAIR_KRONROD_SHARE: f64 = 0.1;
 
-/// Unloading amplitude (`Strip::integrate_etd_amplitude`) from which a
+/// Unloading amplitude (`Strip::integrate_etd`) from which a
 /// panel's strips that differ in flow topology count fully as a kink
 /// ([`Gate`]). A strip's unloading is found at its step ends, so it
 /// appears with an amplitude of about 0.01 already (k = 0.073,

@@ -503,8 +503,8 @@ fn the_pole_strip_unloads_where_the_slip_reverses() {
         let (pole, next) = (sc.strip(yp), sc.strip(yp + 1e-12));
         assert_eq!(pole.a, 0.0);
         for h in [0.3, 0.178, 0.1, 0.0562, 0.0316] {
-            let (p, tp) = pole.integrate_etd(h, 2.0 * h, 0.8 * (h / 0.1).powi(2));
-            let (q, tq) = next.integrate_etd(h, 2.0 * h, 0.8 * (h / 0.1).powi(2));
+            let (p, tp, _) = pole.integrate_etd(h, 2.0 * h, 0.8 * (h / 0.1).powi(2));
+            let (q, tq, _) = next.integrate_etd(h, 2.0 * h, 0.8 * (h / 0.1).powi(2));
             let d = (p.ix - q.ix)
                 .abs()
                 .max((p.iy - q.iy).abs())
