@@ -635,8 +635,14 @@ const INITIAL_STAGE1: f64 = 0.3;
 
 /// Largest Simpson–Lobatto difference of a half, in allowed changes, at
 /// which the pair check of [`lobatto_kronrod_in_phi`] may keep its Lobatto
-/// value (docs/decisions/0080).
-const PAIR_STAGE1: f64 = 20.0;
+/// value (docs/decisions/0080). The pair's agreement can be a chance: k =
+/// 0.0646, J = (0, −0.1669, −0.2730) at tol 5e-4 kept a half on a
+/// difference of 8.1 allowed changes, and the contact was 0.94·tol off
+/// (0.88 at 6e-4, 0.65 at 4e-4); with 4 it is 0.011·tol (0.14 at 6e-4).
+/// 20 → 4 costs +3.8 % / +1.1 % instructions on the 307 cases at tol
+/// 1e-3 / 1e-4 (bench set the same at 1e-3; b +13 % at 1e-4)
+/// (docs/decisions/0125).
+const PAIR_STAGE1: f64 = 4.0;
 
 /// The integrand in φ and a strip's (flow topology, unloading amplitude)
 /// at a node.
