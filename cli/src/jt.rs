@@ -6,10 +6,12 @@
 //! default 1). Output: the input columns followed by `J4,J5,J6,J7`.
 //! `--map` evaluates the elastic/plastic rows through one interpolation map
 //! per (k, dX, gy) (traction-rheology `map::Map`): for large batches at few
-//! geometries. A group whose map would compute more than
-//! [`MAP_NODES_PER_ROW`] node evaluations per row (scattered points, each
-//! opening new cells) is evaluated directly instead, so `--map` costs at most
-//! a few direct evaluations per row on any input (docs/decisions/0043). Rows
+//! geometries. A group's map may compute [`MAP_NODES_PER_ROW`] node
+//! evaluations per row of the group, a budget known before its first cell is
+//! built; a group that would need more (scattered points, each opening new
+//! cells) or that cannot afford one cell (fewer than 130 rows, e.g. a k per
+//! row) is evaluated directly instead. So `--map` costs at most a few direct
+//! evaluations per row on any input (docs/decisions/0043, 0126). Rows
 //! (or, with `--map`, the groups of one map) are evaluated in parallel on all
 //! cores.
 
@@ -17,19 +19,20 @@ use std::collections::HashMap;
 
 use clap::{Args, ValueEnum};
 use rayon::prelude::*;
-use traction_rheology::map::Map;
+use traction_rheology::map::{Budget, CELL_COST, Map, MapStats};
 use traction_rheology::{Accuracy, Inputs, Model, Outputs, RheologyError, evaluate};
 
 use crate::error::CliError;
+use crate::table::{Table, TableWriter, fmt_f64, output_headers};
 
 /// `--map`: node evaluations (at tol/10, plus one check per cell) a group's
-/// map may spend per row of the group; beyond it the group is evaluated
+/// map may spend per row of the group, given to the map as its credit before
+/// any cell is built; where it does not cover a cell the group is evaluated
 /// directly. A node costs 1.4–7 direct evaluations at tol (bench set,
 /// instructions), so a group that exceeds the budget costs at most
 /// 1 + 0.5·7 ≈ 4.5 direct evaluations per row, and one within it ≥ 2 rows
 /// per node, where the map is about as fast as direct evaluation or faster.
 pub const MAP_NODES_PER_ROW: f64 = 0.5;
-use crate::table::{Table, TableWriter, fmt_f64, output_headers};
 
 /// Constitutive model selected on the command line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -64,6 +67,69 @@ pub struct JtArgs {
     /// evaluations per row is evaluated directly instead.
     #[arg(long)]
     pub map: bool,
+}
+
+/// The result of one row: its index and outputs.
+type RowResult = (usize, Result<Outputs, RheologyError>);
+
+/// The rows `g` (indices into `rows`, in input order) of one (k, dX, gy)
+/// group with `--map`, and the counters of the group's map (None where no map
+/// was used).
+///
+/// The group's budget, [`MAP_NODES_PER_ROW`] node evaluations per row, is
+/// the map's credit ([`Budget`]) from the start, so no cell is built that it
+/// does not cover. A group whose budget cannot build one cell
+/// ([`CELL_COST`]) is evaluated directly without a map. Once a row needs a
+/// cell beyond the credit, the whole group is evaluated directly: its
+/// interpolated rows again, its direct ones kept (they are bit-identical).
+/// So the map costs at most its budget plus one direct evaluation per row,
+/// and a group either stays on the map or is bit-identical to the run
+/// without `--map`, decided by its rows in input order alone.
+fn evaluate_group(
+    rows: &[(Inputs, Model)],
+    g: &[usize],
+    acc: Accuracy,
+) -> (Vec<RowResult>, Option<MapStats>) {
+    let direct = |r: usize| (r, evaluate(&rows[r].0, rows[r].1, acc));
+    let credit = MAP_NODES_PER_ROW * g.len() as f64;
+    if credit < CELL_COST {
+        return (g.par_iter().map(|&r| direct(r)).collect(), None);
+    }
+    let credit = credit.min(1e9);
+    let first = &rows[g[0]].0;
+    let map = Map::new(first.k, first.dx, first.gy, acc)
+        .and_then(|m| Budget::new(0.0, credit, credit, credit).map(|b| m.with_budget(b)));
+    let mut map = match map {
+        Ok(map) => map,
+        Err(e) => return (g.iter().map(|&r| (r, Err(e.clone()))).collect(), None),
+    };
+    let mut out = Vec::with_capacity(g.len());
+    // Whether a row's value came from direct evaluation (the closed form,
+    // large |J|, rejected cells): bit-identical to the run without --map.
+    let mut exact = Vec::with_capacity(g.len());
+    for &r in g {
+        let before = map.stats();
+        out.push((r, map.evaluate(&rows[r].0)));
+        let after = map.stats();
+        if after.over_budget > 0 {
+            // This row went direct (over budget); the rows after it follow.
+            exact.push(true);
+            let mut redo: Vec<usize> = g[out.len()..].to_vec();
+            let mut kept = Vec::with_capacity(g.len());
+            for (o, e) in out.into_iter().zip(exact) {
+                if e {
+                    kept.push(o);
+                } else {
+                    redo.push(o.0);
+                }
+            }
+            kept.par_extend(redo.par_iter().map(|&r| direct(r)));
+            return (kept, Some(after));
+        }
+        exact.push(after.interpolated == before.interpolated);
+    }
+    let stats = map.stats();
+    (out, Some(stats))
 }
 
 /// Run the subcommand.
@@ -118,29 +184,7 @@ pub fn run(args: JtArgs) -> Result<(), CliError> {
         let groups: Vec<Vec<usize>> = groups.into_values().collect();
         let done: Vec<Vec<(usize, Result<Outputs, RheologyError>)>> = groups
             .par_iter()
-            .map(|g| {
-                let first = &rows[g[0]].0;
-                match Map::new(first.k, first.dx, first.gy, acc) {
-                    Ok(mut map) => {
-                        // The rows in input order: whether the group exceeds
-                        // the budget depends on its rows alone (not on threads).
-                        let budget = MAP_NODES_PER_ROW * g.len() as f64;
-                        let mut out = Vec::with_capacity(g.len());
-                        for &r in g {
-                            out.push((r, map.evaluate(&rows[r].0)));
-                            let s = map.stats();
-                            if (s.nodes_computed + s.cells_checked) as f64 > budget {
-                                return g
-                                    .par_iter()
-                                    .map(|&r| (r, evaluate(&rows[r].0, rows[r].1, acc)))
-                                    .collect();
-                            }
-                        }
-                        out
-                    }
-                    Err(e) => g.iter().map(|&r| (r, Err(e.clone()))).collect(),
-                }
-            })
+            .map(|g| evaluate_group(&rows, g, acc).0)
             .collect();
         let mut res: Vec<(usize, Result<Outputs, RheologyError>)> =
             done.into_iter().flatten().collect();
@@ -163,4 +207,89 @@ pub fn run(args: JtArgs) -> Result<(), CliError> {
         w.write_row(&cells)?;
     }
     w.finish()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ep(k: f64, j1: f64, j2: f64, j3: f64) -> (Inputs, Model) {
+        (Inputs::new(k, j1, j2, j3).unwrap(), Model::ElasticPlastic)
+    }
+
+    fn direct(rows: &[(Inputs, Model)], acc: Accuracy) -> Vec<Outputs> {
+        rows.iter()
+            .map(|(i, m)| evaluate(i, *m, acc).unwrap())
+            .collect()
+    }
+
+    fn sorted(mut out: Vec<RowResult>) -> Vec<Outputs> {
+        out.sort_unstable_by_key(|(r, _)| *r);
+        out.into_iter().map(|(_, o)| o.unwrap()).collect()
+    }
+
+    /// High-spin states scattered over |J1|, |J2| ≤ 5, J3 ∈ [5, 26].
+    fn scattered(k: f64, n: usize) -> Vec<(Inputs, Model)> {
+        (0..n)
+            .map(|n| {
+                let t = n as f64;
+                let j3 = 15.5 + 10.5 * (0.9 * t).sin();
+                ep(k, 5.0 * (1.7 * t).sin(), 5.0 * (2.3 * t).cos(), j3)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_group_that_cannot_afford_a_cell_builds_none() {
+        // A group of fewer than CELL_COST / MAP_NODES_PER_ROW = 130 rows
+        // (e.g. one row per k) is evaluated directly without a map. The
+        // budget used to be checked only after a row, so each such group
+        // built a cell chain first (65–260 node evaluations at tol/10, about
+        // 250 direct evaluations per row on a 2000-row batch of distinct k).
+        let acc = Accuracy::new(1e-3).unwrap();
+        let rows = scattered(2.0, 129);
+        let g: Vec<usize> = (0..rows.len()).collect();
+        let (out, stats) = evaluate_group(&rows, &g, acc);
+        assert_eq!(stats, None);
+        assert_eq!(sorted(out), direct(&rows, acc));
+        let (out, stats) = evaluate_group(&rows, &[7], acc);
+        assert_eq!(stats, None);
+        assert_eq!(sorted(out), direct(&rows[7..8], acc));
+    }
+
+    #[test]
+    fn a_scattered_group_spends_at_most_its_budget() {
+        // 400 scattered rows: a budget of 200 node evaluations, three cells.
+        // The map stops at the first cell beyond its credit, and the group is
+        // then bit-identical to direct evaluation.
+        let acc = Accuracy::new(1e-3).unwrap();
+        let rows = scattered(2.0, 400);
+        let g: Vec<usize> = (0..rows.len()).collect();
+        let (out, stats) = evaluate_group(&rows, &g, acc);
+        let s = stats.expect("a group of 400 rows has a map");
+        assert!(s.over_budget > 0, "{s:?}");
+        let spent = (s.nodes_computed + s.cells_checked) as f64;
+        assert!(spent <= MAP_NODES_PER_ROW * 400.0, "{s:?}");
+        assert_eq!(sorted(out), direct(&rows, acc));
+    }
+
+    #[test]
+    fn a_dense_group_stays_on_its_map() {
+        // 600 rows within 2 % of one state need one or two cells: within the
+        // budget, interpolated, and within tol of the direct value at tol/100.
+        let acc = Accuracy::new(1e-3).unwrap();
+        let rows: Vec<_> = (0..600)
+            .map(|n| ep(1.0, 1.5 + 5e-5 * f64::from(n), 0.3, 2.0))
+            .collect();
+        let g: Vec<usize> = (0..rows.len()).collect();
+        let (out, stats) = evaluate_group(&rows, &g, acc);
+        let s = stats.expect("a group of 600 rows has a map");
+        assert_eq!(s.over_budget, 0, "{s:?}");
+        assert!(s.interpolated > 500, "{s:?}");
+        let fine = direct(&rows, Accuracy::new(1e-5).unwrap());
+        for (a, b) in sorted(out).iter().zip(&fine) {
+            let d = [a.j4 - b.j4, a.j5 - b.j5, a.j6 - b.j6];
+            assert!(d.iter().all(|d| d.abs() <= 1e-3), "{a:?} vs {b:?}");
+        }
+    }
 }
