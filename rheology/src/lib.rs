@@ -342,10 +342,10 @@ pub enum Model {
 /// except across strips where the flow pattern changes (second order there),
 /// which the adaptive panel halving of [`evaluate`] localises. tol < 1e-4
 /// follows the same rules but is not kept on every case: at high spin and
-/// small k (J3/√k ≈ 100–200) the strips' error stays near 1e-5, measured
-/// up to 1.18·tol at 1e-5, 1.65·tol at 5e-6 and 3.9·tol at 2e-6
-/// (docs/decisions/0127). tol 3e-5 held on 30 000 whole-range cases (worst
-/// 0.81·tol).
+/// small k (|J|/√k ≈ 100–600) the strips' error stays near 1e-5, measured
+/// up to 1.18·tol at 1e-5, 1.65·tol at 5e-6, 3.9·tol at 2e-6 and 11·tol at
+/// 1e-6 (docs/decisions/0127). tol 3e-5 held on 30 000 whole-range cases
+/// (worst 0.57·tol).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Accuracy {
     tol: f64,

@@ -126,6 +126,23 @@ const MAX_STEPS: usize = 1 << 16;
 /// the verified accuracy of `evaluate` (rheology/tests/convergence.rs; its
 /// worst error/tol: crate README, section Convergence).
 const KAPPA_H: f64 = 2.0;
+/// RK4's accuracy margin on κ·h of whole non-stiff segments at the longer
+/// s-step, at tol 1e-4. A segment non-stiff at the longer step (κ·h ≤
+/// KAPPA_H over it) takes equal RK4 steps of about that step only where
+/// κ·h ≤ KAPPA_H_SMOOTH·s_step/S_STEP_1E4 there too; otherwise equal RK4
+/// steps of about the s-step. The margin falls with the s-step (∝
+/// tol^(1/4)) and is KAPPA_H from tol ≈ 3.2e-4 up, where nothing changes.
+///
+/// RK4 follows a relaxing stress direction poorly at κ·h near 2, and the
+/// error it leaves does not fall with the step's tol^(1/4) alone: at k =
+/// 0.0654, J = (−0.712, −0.277, −1.692) the strips after a re-yield (κ·h
+/// 0.5 → 1.9 along the segment) were off by up to 2e-3 rad, and J6 by
+/// 0.73·tol at tol 1e-4 and 0.89–0.94·tol from 3e-5 to 2e-6; now 0.14·tol
+/// (docs/decisions/0128). Where the longer s-step is the s-step
+/// (`Strip::integrate`) the steps are unchanged.
+const KAPPA_H_SMOOTH: f64 = 1.5;
+/// The s-step at tol 1e-4, 0.1·(0.1)^(1/4) ([`crate::Accuracy::s_step`]).
+const S_STEP_1E4: f64 = 0.056_234_132_519_034_91;
 /// Step of the slowest non-stiff segments in `evaluate`, as a multiple of
 /// the longer s-step: taken where κ·h ≤ KAPPA_H_LONG at it over the whole
 /// segment (and the slip direction turns by ≤ TURN_PER_STEP s-steps per
@@ -378,7 +395,13 @@ impl Strip {
             (kr * h + t) * (1.0 + KAPPA_H_SLACK) <= margin && ar * h <= a_h
         };
         let mut nonstiff = ok(h, KAPPA_H);
-        if nonstiff && etd_step > 0.0 {
+        let margin = KAPPA_H_SMOOTH * (s_step / S_STEP_1E4);
+        if nonstiff && margin < KAPPA_H && !ok(h, margin) {
+            // Stable for RK4 at the longer step but beyond its accuracy
+            // margin: RK4 at the s-step.
+            nsteps = steps(s_step);
+            h = span / nsteps as f64;
+        } else if nonstiff && etd_step > 0.0 {
             let nl = steps(LONG_FACTOR * s_step_smooth);
             let hl = span / nl as f64;
             if nl < nsteps && ok(hl, KAPPA_H_LONG) {
