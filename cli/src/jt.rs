@@ -223,9 +223,13 @@ mod tests {
             .collect()
     }
 
-    fn sorted(mut out: Vec<RowResult>) -> Vec<Outputs> {
+    /// `rows` as one group through [`evaluate_group`]: the outputs in row
+    /// order and the map's counters.
+    fn whole_group(rows: &[(Inputs, Model)], acc: Accuracy) -> (Vec<Outputs>, Option<MapStats>) {
+        let g: Vec<usize> = (0..rows.len()).collect();
+        let (mut out, stats) = evaluate_group(rows, &g, acc);
         out.sort_unstable_by_key(|(r, _)| *r);
-        out.into_iter().map(|(_, o)| o.unwrap()).collect()
+        (out.into_iter().map(|(_, o)| o.unwrap()).collect(), stats)
     }
 
     /// High-spin states scattered over |J1|, |J2| ≤ 5, J3 ∈ [5, 26].
@@ -249,13 +253,12 @@ mod tests {
         // direct evaluation).
         let acc = Accuracy::new(1e-3).unwrap();
         let rows = scattered(2.0, 129);
-        let g: Vec<usize> = (0..rows.len()).collect();
-        let (out, stats) = evaluate_group(&rows, &g, acc);
+        let (out, stats) = whole_group(&rows, acc);
         assert_eq!(stats, None);
-        assert_eq!(sorted(out), direct(&rows, acc));
-        let (out, stats) = evaluate_group(&rows, &[7], acc);
+        assert_eq!(out, direct(&rows, acc));
+        let (out, stats) = whole_group(&rows[7..8], acc);
         assert_eq!(stats, None);
-        assert_eq!(sorted(out), direct(&rows[7..8], acc));
+        assert_eq!(out, direct(&rows[7..8], acc));
     }
 
     #[test]
@@ -265,13 +268,12 @@ mod tests {
         // then bit-identical to direct evaluation.
         let acc = Accuracy::new(1e-3).unwrap();
         let rows = scattered(2.0, 400);
-        let g: Vec<usize> = (0..rows.len()).collect();
-        let (out, stats) = evaluate_group(&rows, &g, acc);
+        let (out, stats) = whole_group(&rows, acc);
         let s = stats.expect("a group of 400 rows has a map");
         assert!(s.over_budget > 0, "{s:?}");
         let spent = (s.nodes_computed + s.cells_checked) as f64;
         assert!(spent <= MAP_NODES_PER_ROW * 400.0, "{s:?}");
-        assert_eq!(sorted(out), direct(&rows, acc));
+        assert_eq!(out, direct(&rows, acc));
     }
 
     #[test]
@@ -282,13 +284,12 @@ mod tests {
         let rows: Vec<_> = (0..600)
             .map(|n| ep(1.0, 1.5 + 5e-5 * f64::from(n), 0.3, 2.0))
             .collect();
-        let g: Vec<usize> = (0..rows.len()).collect();
-        let (out, stats) = evaluate_group(&rows, &g, acc);
+        let (out, stats) = whole_group(&rows, acc);
         let s = stats.expect("a group of 600 rows has a map");
         assert_eq!(s.over_budget, 0, "{s:?}");
         assert!(s.interpolated > 500, "{s:?}");
         let fine = direct(&rows, Accuracy::new(1e-5).unwrap());
-        for (a, b) in sorted(out).iter().zip(&fine) {
+        for (a, b) in out.iter().zip(&fine) {
             let d = [a.j4 - b.j4, a.j5 - b.j5, a.j6 - b.j6];
             assert!(d.iter().all(|d| d.abs() <= 1e-3), "{a:?} vs {b:?}");
         }
