@@ -345,7 +345,7 @@ pub enum Model {
 /// small k (|J|/√k ≈ 100–600) the strips' error stays near 1e-5, measured
 /// up to 1.18·tol at 1e-5, 1.65·tol at 5e-6, 3.9·tol at 2e-6 and 11·tol at
 /// 1e-6 (docs/decisions/0127). tol 3e-5 held on 75 000 whole-range cases
-/// (worst 0.73·tol).
+/// (worst 0.725·tol).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Accuracy {
     tol: f64,

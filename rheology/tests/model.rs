@@ -835,11 +835,11 @@ fn whole_segments_of_rk4_steps_keep_tol_after_a_reyield() {
     // longer s-step (κ·h 0.5 → 1.9). RK4 at κ·h near 2 left the stress
     // direction up to 2e-3 rad off, and J6 0.73·tol off at tol 1e-4 and
     // 0.89–0.94·tol from 3e-5 to 2e-6 (seed 1 #211 of `cargo xtask ep-sets
-    // errs`). The margin is now 1.5 at tol 1e-4, falling with the s-step
-    // (docs/decisions/0128). Against tol 1e-7: measured 0.137 / 0.134 /
-    // 0.142·tol at 1e-4 / 3e-5 / 1e-5; 0.25·tol keeps a margin.
+    // errs`). The margin is now 1.2 at tol 1e-4, falling with the s-step
+    // (docs/decisions/0128). Against tol 1e-7: measured 0.196 / 0.193 /
+    // 0.208·tol at 1e-4 / 3e-5 / 1e-5; 0.3·tol keeps a margin.
     let i = inp(0.0654, -0.712, -0.277, -1.692);
-    elastic_plastic_within_share(&i, &[1e-4, 3e-5, 1e-5], 0.25);
+    elastic_plastic_within_share(&i, &[1e-4, 3e-5, 1e-5], 0.3);
 }
 
 /// Asserts that the elastic/plastic model at `i` is within `share`·tol of

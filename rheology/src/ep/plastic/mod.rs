@@ -129,18 +129,19 @@ const KAPPA_H: f64 = 2.0;
 /// RK4's accuracy margin on κ·h of whole non-stiff segments at the longer
 /// s-step, at tol 1e-4. A segment non-stiff at the longer step (κ·h ≤
 /// KAPPA_H over it) takes equal RK4 steps of about that step only where
-/// κ·h ≤ KAPPA_H_SMOOTH·s_step/S_STEP_1E4 there too; otherwise equal RK4
-/// steps of about the s-step. The margin falls with the s-step (∝
-/// tol^(1/4)) and is KAPPA_H from tol ≈ 3.2e-4 up, where nothing changes.
+/// κ·h ≤ KAPPA_H_SMOOTH·s_step/S_STEP_1E4 there too; otherwise the fewest
+/// equal RK4 steps within that margin, at most those of the s-step. The
+/// margin falls with the s-step (∝ tol^(1/4)) and is KAPPA_H from tol ≈
+/// 7.7e-4 up, where nothing changes.
 ///
 /// RK4 follows a relaxing stress direction poorly at κ·h near 2, and the
 /// error it leaves does not fall with the step's tol^(1/4) alone: at k =
 /// 0.0654, J = (−0.712, −0.277, −1.692) the strips after a re-yield (κ·h
 /// 0.5 → 1.9 along the segment) were off by up to 2e-3 rad, and J6 by
-/// 0.73·tol at tol 1e-4 and 0.89–0.94·tol from 3e-5 to 2e-6; now 0.14·tol
+/// 0.73·tol at tol 1e-4 and 0.89–0.94·tol from 3e-5 to 2e-6; now 0.20·tol
 /// (docs/decisions/0128). Where the longer s-step is the s-step
 /// (`Strip::integrate`) the steps are unchanged.
-const KAPPA_H_SMOOTH: f64 = 1.5;
+const KAPPA_H_SMOOTH: f64 = 1.2;
 /// The s-step at tol 1e-4, 0.1·(0.1)^(1/4) ([`crate::Accuracy::s_step`]).
 const S_STEP_1E4: f64 = 0.056_234_132_519_034_91;
 /// Step of the slowest non-stiff segments in `evaluate`, as a multiple of
@@ -398,8 +399,15 @@ impl Strip {
         let margin = KAPPA_H_SMOOTH * (s_step / S_STEP_1E4);
         if nonstiff && margin < KAPPA_H && !ok(h, margin) {
             // Stable for RK4 at the longer step but beyond its accuracy
-            // margin: RK4 at the s-step.
-            nsteps = steps(s_step);
+            // margin: the fewest equal steps within the margin, at most
+            // those of the s-step (the count grows one at a time with κ, so
+            // the results do not jump where a segment crosses the margin).
+            let most = steps(s_step);
+            let mut n = ceil_count(span * kr / margin).clamp(nsteps, most);
+            while n < most && !ok(span / n as f64, margin) {
+                n += 1;
+            }
+            nsteps = n;
             h = span / nsteps as f64;
         } else if nonstiff && etd_step > 0.0 {
             let nl = steps(LONG_FACTOR * s_step_smooth);
