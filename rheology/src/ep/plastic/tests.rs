@@ -738,3 +738,14 @@ fn rosenbrock_lag_steps_follow_relaxed_stiff_strips() {
         assert!(e1 < 2e-6 && e2 < e1 / 2.0, "Y = {y}: {e1:e} → {e2:e}");
     }
 }
+
+#[test]
+fn the_accuracy_margins_reference_s_step_is_that_of_tol_1e_4() {
+    // S_STEP_1E4 is a literal so that the segment margin costs one
+    // multiplication; it must stay the s-step `Accuracy` gives at 1e-4.
+    let s = crate::Accuracy::new(1e-4).unwrap().s_step();
+    assert!(
+        (super::S_STEP_1E4 - s).abs() <= 4.0 * f64::EPSILON * s,
+        "{s}"
+    );
+}
