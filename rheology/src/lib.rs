@@ -340,12 +340,15 @@ pub enum Model {
 /// The elastic/plastic
 /// integrator is fourth order in the s-step and, in Y, spectrally convergent
 /// except across strips where the flow pattern changes (second order there),
-/// which the adaptive panel halving of [`evaluate`] localises. tol < 1e-4
-/// follows the same rules but is not kept on every case: at high spin and
-/// small k (|J|/√k ≈ 100–600) the strips' error stays near 1e-5, measured
-/// up to 1.18·tol at 1e-5, 1.65·tol at 5e-6, 3.9·tol at 2e-6 and 11·tol at
-/// 1e-6 (docs/decisions/0127). tol 3e-5 held on 75 000 whole-range cases
-/// (worst 0.725·tol).
+/// which the adaptive panel halving of [`evaluate`] localises. Below tol
+/// 1e-4 the same rules hold, with the stiff plastic steps' RK4 margin
+/// falling as √tol and their quasi-steady steps starting at a fixed κ
+/// (docs/decisions/0129; before, the strips' error stayed near 1e-5 at
+/// high spin and small k, up to 12·tol at 1e-6). A whole-range scan of
+/// 30 000 cases at tol 3e-5 / 1e-5 / 5e-6 against tol 2.5e-7 measured
+/// worst 0.58 / 0.65 / 0.31·tol; tests cover cases to tol 1e-6. Such
+/// tolerances cost more than the former rules: +15 % at 1e-5, +49 % at
+/// 1e-6 on the 307 cases of `cargo xtask ep-sets bits`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Accuracy {
     tol: f64,

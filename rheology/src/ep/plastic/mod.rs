@@ -186,6 +186,59 @@ const ANISO_SUB: (f64, f64) = (8.0, 10.0);
 /// KAPPA_H), for +8 % instructions on the random sets at 1e-3 and ≤ 0.2 %
 /// on the bench set at 1e-3 and 1e-4 (case a at 1e-2 +14 %).
 const KAPPA_H_STIFF: f64 = 1.5;
+
+/// The stiff steps' settings at an s-step ([`Stiff::at`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Stiff {
+    /// RK4 margin on κ·h of a sub-step.
+    kh: f64,
+    /// Factor on the quasi-steady threshold (MAX_SUB·KAPPA_H, and the
+    /// anisotropic one).
+    qs: f64,
+}
+
+impl Stiff {
+    /// The settings at the s-step `s_step`: at tol ≥ 1e-4 the RK4 margin
+    /// KAPPA_H_STIFF and the quasi-steady threshold MAX_SUB·KAPPA_H; below,
+    /// with r = s_step/S_STEP_1E4 (∝ tol^(1/4)), the margin
+    /// KAPPA_H_STIFF·r² (∝ √tol: 0.47 at tol 1e-5, 0.15 at 1e-6; applied
+    /// through [`Stiff::sub_steps`]) and the threshold divided by r (the
+    /// quasi-steady steps start at the same κ, not at the same κ·h).
+    ///
+    /// Neither error falls with the s-step alone. RK4 sub-steps follow the
+    /// relaxation of the stress direction after a yield, or after the slip
+    /// direction turns where a strip crosses vy = 0, with an error of about
+    /// (κ·h)^2.6 (measured at tol 1e-6 with margins 1.5 … 0.15); the
+    /// quasi-steady direction neglects terms of order 1/κ. With both fixed,
+    /// k = 0.0633, J = (0, −115.84, 87.68) was off by 0.70 / 4.4 /
+    /// 12.1·tol at tol 1e-5 / 2e-6 / 1e-6 (now 0.09 / 0.03 / 0.03), and
+    /// k = 0.0789, J = (−215.6, 1.63, −548.9) by 0.72 / 1.85 / 2.10·tol
+    /// (now 0.17 / 0.03 / 0.01); a margin ∝ r left error/tol growing as tol
+    /// falls (k = 0.0748, J = (0, −28.57, 27.16): 1.22 at 1e-5, 1.99 at
+    /// 1e-6). Nothing changes at tol ≥ 1e-4 (docs/decisions/0129).
+    #[inline(always)]
+    fn at(s_step: f64) -> Self {
+        let r = (s_step / S_STEP_1E4).min(1.0);
+        Stiff {
+            kh: KAPPA_H_STIFF * (r * r),
+            qs: 1.0 / r,
+        }
+    }
+
+    /// The RK4 sub-step count for κ of a step of κ·h = `kh` (real, see
+    /// `Strip::sub_steps`): kh/KAPPA_H_STIFF, and at least min(kh,
+    /// KAPPA_H)/margin. The small margin serves the relaxation transient,
+    /// which the graded start after a yield takes in steps of κ·h ≤
+    /// KAPPA_H; on the longer steps the flow has relaxed, and their count
+    /// only has to stay continuous in kh. With the margin on every step, at
+    /// tol 1e-7 k = 1, J = (0, 0, 1e4) took 4.6 s instead of 0.24 s, with
+    /// results within 4e-10 of each other (docs/decisions/0129).
+    #[inline(always)]
+    fn sub_steps(&self, kh: f64) -> f64 {
+        (kh / KAPPA_H_STIFF).max(kh.min(KAPPA_H) / self.kh)
+    }
+}
+
 /// Relative slack of the κ·h test of a whole segment (round-off of the bound).
 const KAPPA_H_SLACK: f64 = 1e-12;
 /// κ·h of the first step after yield on stiff segments (doubled per step).
@@ -202,10 +255,10 @@ const OUTLET_CS: f64 = 1e-12;
 impl Strip {
     /// Advance the plastic state by h (cos/sin of h/2 given): one RK4 step,
     /// or sub-steps whose lengths vary continuously with the step's bounds
-    /// (`Strip::sub_steps`) where κ·h exceeds the RK4 margin KAPPA_H_STIFF
-    /// or the slip direction turns by more than `a_h` within the step
-    /// (beyond κ·h = MAX_SUB·KAPPA_H: the quasi-steady direction, blended in
-    /// up to QS_BLEND times that).
+    /// (`Strip::sub_steps`) where κ·h exceeds the RK4 margin `stiff.kh`
+    /// ([`Stiff::at`]) or the slip direction turns by more than `a_h`
+    /// within the step (beyond κ·h = MAX_SUB·KAPPA_H·`stiff.qs`: the
+    /// quasi-steady direction, blended in up to QS_BLEND times that).
     /// `rates`: the step's (κ·h, |α'|·h) bounds if the caller has them.
     /// Inlined: its call and the state passed through memory cost ≈ 40
     /// instructions per stiff step (bit-identical results; cases a, b, c
@@ -219,6 +272,7 @@ impl Strip {
         c2: f64,
         s2: f64,
         a_h: f64,
+        stiff: Stiff,
         rates: Option<(f64, f64)>,
     ) -> PState {
         let (sm, cm) = (p.sn * c2 + p.cs * s2, p.cs * c2 - p.sn * s2);
@@ -228,14 +282,14 @@ impl Strip {
             Some(r) => r,
             None => self.rates::<ISO>(p.sn, p.cs, s1, c1, h),
         };
-        if kh.is_nan() || (kh <= KAPPA_H_STIFF && ah <= a_h) {
+        if kh.is_nan() || (kh <= stiff.kh && ah <= a_h) {
             return self.rk4::<ISO>(p, h, c2, s2);
         }
-        // Sub-steps needed for accuracy (κ·h ≤ KAPPA_H_STIFF) and the turn,
+        // Sub-steps needed for accuracy (`Stiff::sub_steps`) and the turn,
         // as a real number; the quasi-steady branch from κ·h > MAX_SUB·
-        // KAPPA_H.
+        // KAPPA_H·stiff.qs.
         let mk = kh / KAPPA_H;
-        let (mr_k, mr_a) = (kh / KAPPA_H_STIFF, (ah / a_h).min(MAX_SUB_TURN));
+        let (mr_k, mr_a) = (stiff.sub_steps(kh), (ah / a_h).min(MAX_SUB_TURN));
         let mut mr = mr_k.max(mr_a);
         // With gy ≠ 1 the bound holds over every stress direction. Where it
         // asks for more than ANISO_SUB.0 sub-steps, the relaxation rate at
@@ -243,7 +297,7 @@ impl Strip {
         // (`Strip::aniso_sub_steps`). The quasi-steady switch keeps the
         // bound.
         if !self.iso::<ISO>() && mr > ANISO_SUB.0 {
-            mr = self.aniso_sub_steps(p, (s1, c1, h), mr_k, mr_a);
+            mr = self.aniso_sub_steps(p, (s1, c1, h), (mr_k, mr_a), stiff.kh);
         }
         // With gy ≠ 1 the bound on κ·h (see `rates`) can exceed the actual
         // relaxation rate of θ by up to f = 1 + |gy − 1|/min(1, gy), and the
@@ -253,11 +307,12 @@ impl Strip {
         // 16·f still 1.65·tol at 1e-4 (gy = 0.1, k = 0.05, J ≈ 300); at
         // 4·16·f within tol on the anisotropic scan of the crate README
         // (+0–20 % time).
-        let max_sub = if self.iso::<ISO>() {
-            MAX_SUB as f64
-        } else {
-            4.0 * MAX_SUB_ANISO as f64 * (1.0 + self.aniso_f())
-        };
+        let max_sub = stiff.qs
+            * if self.iso::<ISO>() {
+                MAX_SUB as f64
+            } else {
+                4.0 * MAX_SUB_ANISO as f64 * (1.0 + self.aniso_f())
+            };
         if mk <= max_sub {
             return self.sub_steps::<ISO>(p, (h, c2, s2), mr);
         }
@@ -280,20 +335,21 @@ impl Strip {
     /// (a C¹ step; below ANISO_SUB.0 the rate costs more than the sub-steps
     /// it saves). Continuous in the inputs: the count only falls towards
     /// the turn's, where that sets it.
+    /// `margin`: the RK4 margin on κ·h of a sub-step (`Stiff::at`).
     #[cold]
     #[inline(never)]
     fn aniso_sub_steps(
         &self,
         p: &PState,
         (s1, c1, h): (f64, f64, f64),
-        mr_k: f64,
-        mr_a: f64,
+        (mr_k, mr_a): (f64, f64),
+        margin: f64,
     ) -> f64 {
         let mr = mr_k.max(mr_a);
         if mr_k <= mr_a || mr_k <= ANISO_SUB.0 {
             return mr;
         }
-        let act = self.aniso_rate(p, s1, c1, h) / KAPPA_H_STIFF;
+        let act = self.aniso_rate(p, s1, c1, h) / margin;
         if act >= mr_k {
             return mr;
         }
@@ -302,7 +358,7 @@ impl Strip {
     }
 
     /// `p` advanced by h in RK4 sub-steps where the step needs mr > 1 of
-    /// them (real: κ·h/KAPPA_H_STIFF or the turn's count, see `advance`):
+    /// them (real: κ·h/`stiff.kh` or the turn's count, see `advance`):
     /// with n = ⌊mr⌋ and f = mr − n, a first sub-step of length
     /// r = lo + f·(h/(n + 1) − lo), lo = f·h/mr, then n equal ones of
     /// (h − r)/n ≤ h/mr (within the margin). The lengths are continuous in
@@ -485,6 +541,7 @@ impl Strip {
         rec: &mut impl FnMut(Event),
     ) -> PlasticEnd {
         let a_h = TURN_PER_STEP * s_step;
+        let stiff = Stiff::at(s_step);
         let (s2, c2) = sin_cos_small(0.5 * h);
         // sin/cos of the whole step (double angle).
         let sc_h = (2.0 * s2 * c2, (c2 - s2) * (c2 + s2));
@@ -597,7 +654,7 @@ impl Strip {
                         && hv == h_full
                         && kh > ROS_SUB.0 * KAPPA_H_STIFF
                         && ah < ROS_SUB_TURN.1 * a_h_step
-                        && kh < QS_BLEND * MAX_SUB as f64 * KAPPA_H
+                        && kh < QS_BLEND * MAX_SUB as f64 * stiff.qs * KAPPA_H
                     {
                         break Some((hv, c2v, s2v, hv >= rem, kh, ah, a_h_step));
                     }
@@ -607,7 +664,7 @@ impl Strip {
                     self.rk4::<ISO>(&p, h, c2, s2)
                 } else {
                     s_cur += h;
-                    self.advance::<ISO>(&p, h, c2, s2, a_h_step, step_rates)
+                    self.advance::<ISO>(&p, h, c2, s2, a_h_step, stiff, step_rates)
                 };
                 let step = (h, last, allow_unload, a_h);
                 if let Some(end) = self.step_end::<ISO, VIS>(&p, &mut q, step, acc, rec) {
@@ -623,7 +680,7 @@ impl Strip {
             };
             s_cur += h;
             let ros_eps = ROS_EST * (s_step * s_step) * (s_step * s_step);
-            let mut q = self.advance_ros(&p, (h, c2, s2), a_h_step, (kh, ah), ros_eps);
+            let mut q = self.advance_ros(&p, (h, c2, s2), (a_h_step, stiff), (kh, ah), ros_eps);
             let step = (h, last, allow_unload, a_h);
             if let Some(end) = self.step_end::<ISO, VIS>(&p, &mut q, step, acc, rec) {
                 return end;
@@ -648,15 +705,15 @@ impl Strip {
         &self,
         p: &PState,
         (h, c2, s2): (f64, f64, f64),
-        a_h: f64,
+        (a_h, stiff): (f64, Stiff),
         (kh, ah): (f64, f64),
         eps: f64,
     ) -> PState {
         crate::counts::count!(stiff_steps);
         let mk = kh / KAPPA_H;
-        let (mr_k, mr_a) = (kh / KAPPA_H_STIFF, (ah / a_h).min(MAX_SUB_TURN));
+        let (mr_k, mr_a) = (stiff.sub_steps(kh), (ah / a_h).min(MAX_SUB_TURN));
         let rk = self.sub_steps_or_ros(p, (h, c2, s2), (mr_k, mr_a), eps);
-        let max_sub = MAX_SUB as f64;
+        let max_sub = MAX_SUB as f64 * stiff.qs;
         if mk <= max_sub {
             return rk;
         }
@@ -883,7 +940,7 @@ impl Strip {
         rec: &mut impl FnMut(Event),
     ) -> PlasticEnd {
         let (s_step, _, h) = steps;
-        let a_h = TURN_PER_STEP * s_step;
+        let (a_h, stiff) = (TURN_PER_STEP * s_step, Stiff::at(s_step));
         let (s2, c2) = sin_cos_small(0.5 * h);
         let step = |p: &PState| match self.etd(p, h, c2, s2) {
             Some(q) => q,
@@ -894,7 +951,7 @@ impl Strip {
                 let (s2s, c2s) = sin_cos_small(0.5 * hs);
                 let mut q = *p;
                 for _ in 0..m as usize {
-                    q = self.advance::<true>(&q, hs, c2s, s2s, a_h, None);
+                    q = self.advance::<true>(&q, hs, c2s, s2s, a_h, stiff, None);
                 }
                 q
             }

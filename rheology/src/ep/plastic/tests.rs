@@ -73,7 +73,7 @@ fn advance_ros_is_continuous_across_its_step_kinds() {
     let go = |h: f64, eps: f64| {
         let (s2, c2) = super::sin_cos_small(0.5 * h);
         let rates = (kappa_h::<true>(&st, &p, h), 0.0);
-        let q = st.advance_ros(&p, (h, c2, s2), 1.0, rates, eps);
+        let q = st.advance_ros(&p, (h, c2, s2), (1.0, super::Stiff::at(1.0)), rates, eps);
         [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
     };
     let mut thresholds: Vec<f64> = (1..)
@@ -134,7 +134,7 @@ fn assert_advance_continuous<const ISO: bool>(
     let p = lagging_state(st);
     let go = |h: f64| {
         let (s2, c2) = super::sin_cos_small(0.5 * h);
-        let q = st.advance::<ISO>(&p, h, c2, s2, f64::INFINITY, None);
+        let q = st.advance::<ISO>(&p, h, c2, s2, f64::INFINITY, super::Stiff::at(1.0), None);
         [q.nx, q.ny, q.acc.ix, q.acc.iy, q.acc.ixy]
     };
     assert_continuous(|h| kappa_h::<ISO>(st, &p, h), go, thresholds, |h| at(&p, h));
@@ -748,4 +748,45 @@ fn the_accuracy_margins_reference_s_step_is_that_of_tol_1e_4() {
         (super::S_STEP_1E4 - s).abs() <= 4.0 * f64::EPSILON * s,
         "{s}"
     );
+}
+
+#[test]
+fn stiff_settings_follow_tol_only_below_1e_4() {
+    use super::{KAPPA_H, KAPPA_H_STIFF, Stiff};
+    let at = |tol: f64| Stiff::at(crate::Accuracy::new(tol).unwrap().s_step());
+    // From tol 1e-4 up (1e-4 itself included) the settings and the
+    // sub-step count are exactly the former constants.
+    for tol in [0.1, 1e-2, 1e-3, 3e-4, 1e-4] {
+        let st = at(tol);
+        assert!(
+            st.kh == KAPPA_H_STIFF && st.qs == 1.0,
+            "tol {tol:e}: {st:?}"
+        );
+        for kh in [0.1, 1.0, 1.7, 2.0, 5.0, 17.0, 300.0] {
+            assert_eq!(st.sub_steps(kh).to_bits(), (kh / KAPPA_H_STIFF).to_bits());
+        }
+    }
+    // Below: the margin ∝ √tol, the threshold ∝ tol^(-1/4).
+    for (tol, kh, qs) in [(1e-5, 0.474, 1.778), (1e-6, 0.150, 3.162)] {
+        let st = at(tol);
+        assert!(
+            (st.kh - kh).abs() < 1e-3 && (st.qs - qs).abs() < 1e-3,
+            "{st:?}"
+        );
+        // The count is continuous and non-decreasing in κ·h, and at
+        // least the former one.
+        let mut last = 0.0;
+        for i in 1..=4000 {
+            let x = i as f64 * 0.005;
+            let m = st.sub_steps(x);
+            assert!(m >= last && m >= x / KAPPA_H_STIFF, "κ·h {x}: {m}");
+            assert!(
+                m - last <= 0.005 / st.kh + 1e-12,
+                "κ·h {x}: jump {}",
+                m - last
+            );
+            last = m;
+        }
+        assert_eq!(st.sub_steps(KAPPA_H), KAPPA_H / st.kh);
+    }
 }

@@ -8,8 +8,8 @@
 //! falsi. The strip integration then goes on elastically from there.
 
 use super::super::{PState, Strip};
-use super::TURN_PER_STEP;
 use super::rules::sin_cos_small;
+use super::{Stiff, TURN_PER_STEP};
 
 /// Largest number of iterations (integrations of the step) locating the
 /// start of unloading.
@@ -113,7 +113,7 @@ impl Strip {
         }
         let t = u * h;
         let (st, ct) = sin_cos_small(0.5 * t);
-        let r = self.advance::<ISO>(p, t, ct, st, a_h, None);
+        let r = self.advance::<ISO>(p, t, ct, st, a_h, Stiff::at(a_h / TURN_PER_STEP), None);
         let gr = self.g::<true>(r.sn, r.cs, r.nx, r.ny);
         (gr < 0.0).then_some((r, t, gr))
     }
@@ -167,7 +167,7 @@ impl Strip {
                 0.5 * (tl + th)
             };
             let (st, ct) = sin_cos_small(0.5 * t);
-            let r = self.advance::<ISO>(p, t, ct, st, a_h, None);
+            let r = self.advance::<ISO>(p, t, ct, st, a_h, Stiff::at(a_h / TURN_PER_STEP), None);
             let gr = self.g::<VIS>(r.sn, r.cs, r.nx, r.ny);
             best = r;
             if gr.abs() < UNLOAD_G_TOL {
