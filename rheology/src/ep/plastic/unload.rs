@@ -146,6 +146,7 @@ impl Strip {
         let mut best = *p;
         let mut side = 0i32;
         let s_step = a_h / TURN_PER_STEP;
+        let stiff = Stiff::at(s_step);
         let t_tol = UNLOAD_ROOT_PER_STEP4 * (s_step * s_step) * (s_step * s_step);
         let mut newton = hermite_root(
             g0,
@@ -167,7 +168,7 @@ impl Strip {
                 0.5 * (tl + th)
             };
             let (st, ct) = sin_cos_small(0.5 * t);
-            let r = self.advance::<ISO>(p, t, ct, st, a_h, Stiff::at(a_h / TURN_PER_STEP), None);
+            let r = self.advance::<ISO>(p, t, ct, st, a_h, stiff, None);
             let gr = self.g::<VIS>(r.sn, r.cs, r.nx, r.ny);
             best = r;
             if gr.abs() < UNLOAD_G_TOL {
