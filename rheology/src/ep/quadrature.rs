@@ -417,6 +417,30 @@ pub(crate) fn solve_adaptive(
 /// (docs/decisions/0094).
 const KINK_POINTS: usize = 3;
 
+/// Regula falsi points ([`KINK_POINTS`]) for a kink located between two
+/// neighbouring nodes of an initial panel (`lobatto_kronrod_in_phi`), on
+/// reshaped margins: the unloading side's (< 0), which vanishes like the
+/// square root of the distance from the kink, squared and divided by the
+/// bracket's margin there; the other side's capped at that margin (it
+/// jumps to MARGIN_CAP where a plastic segment vanishes). k = 0.0768,
+/// J = (−0.0987, −0.0493, −0.3392), kinks at φ ≈ −0.7927 and 0.7190: 3
+/// points on the plain margins split at −0.7861 and 0.6872 (the cap at
+/// one end held the bracket), 4 reshaped at −0.7885 and 0.7175. The
+/// largest second differences of `cargo xtask ep-sets lines` (small k,
+/// small spin, seeds 1 / 7 / 9, tol 1e-4): 3 plain 0.167 / 0.162 / 0.067,
+/// 3 reshaped 0.072 / 0.449 / 0.169, 4 reshaped 0.062 / 0.162 / 0.063, 5
+/// reshaped 0.045 / 0.162 / 0.062, 5 and 6 with only the cap 0.142 / 0.163
+/// / 0.114 and 0.092 / 0.163 / 0.098 (docs/decisions/0130).
+const KINK_POINTS_INSIDE: usize = 4;
+
+/// Refinement share of an initial panel from which its kinks between nodes
+/// are located: its refinement goes to its pieces by a C¹ step from 0 at
+/// this share to 1 at a share of 1 (to its halves otherwise). Locating at
+/// every share > 0, the bench case b (whose panels at the pole's strip are
+/// refined by shares of 0.06–0.08 at tol 1e-4) cost +33 % instructions; from
+/// 0.5 on +0.3 % (docs/decisions/0130).
+const PIECES_FROM: f64 = 0.5;
+
 /// Least distance of a regula falsi point (not the split) from either end
 /// of its bracket, as a share of the bracket: a safeguard for margins far
 /// from linear, where regula falsi keeps one end and creeps towards the
@@ -648,11 +672,91 @@ const PAIR_STAGE1: f64 = 4.0;
 /// at a node.
 type Node = ([f64; 4], (u32, f64));
 
-/// A panel: lo, hi, the nodes there, its depth, the weight of its value in
-/// the result, and, for the halves of a refined panel, the share of the
-/// halves' pair that does not pass the pair check (their interior Lobatto
-/// nodes are then on the stack of nodes already evaluated).
-type Panel = (f64, f64, Node, Node, u32, f64, Option<f64>);
+/// A panel of [`lobatto_kronrod_in_phi`].
+struct Panel {
+    /// Its ends in φ.
+    lo: f64,
+    hi: f64,
+    /// The nodes at its ends.
+    fl: Node,
+    fh: Node,
+    /// Its depth of refinement (0: an initial panel, or a piece of one split
+    /// at its kinks).
+    depth: u32,
+    /// The weight of its value in the result.
+    weight: f64,
+    /// For the halves of a refined panel, the share of the halves' pair that
+    /// does not pass the pair check (their interior Lobatto nodes are then
+    /// on the stack of nodes already evaluated).
+    pair: Option<f64>,
+    /// Whether it is a piece of an initial panel split at the kinks its
+    /// nodes showed (it is not split at kinks again).
+    located: bool,
+}
+
+impl Panel {
+    /// An initial panel, or a piece of one (`located`), of weight `weight`.
+    fn initial(lo: f64, hi: f64, fl: Node, fh: Node, weight: f64, located: bool) -> Self {
+        Panel {
+            lo,
+            hi,
+            fl,
+            fh,
+            depth: 0,
+            weight,
+            pair: None,
+            located,
+        }
+    }
+}
+
+/// The kink between `a` and `b`, whose kink margins `ma` and `mb` differ in
+/// sign, by regula falsi on the margins of `node_at` (`points` − 1 located
+/// points, kept KINK_STEP_MIN of the bracket from its ends, then the
+/// bracket's secant root; with `shaped` on the margins reshaped as in
+/// [`KINK_POINTS_INSIDE`]), pulled to the nearer end of the panel `[lo, hi]`
+/// within `band` of it (a C¹ smooth step in the distance).
+fn locate_kink(
+    node_at: &mut impl FnMut(f64, bool) -> (Node, f64),
+    (mut a, ma): (f64, f64),
+    (mut b, mb): (f64, f64),
+    (lo, hi, band): (f64, f64, f64),
+    (points, shaped): (usize, bool),
+) -> f64 {
+    // With `shaped`, the unloading side's margin (< 0), which vanishes like
+    // the square root of the distance from the kink, is squared (scaled by
+    // the bracket's margin there, so that it is continuous in the inputs).
+    let scale = if ma < 0.0 { -ma } else { -mb };
+    let shape = |m: f64| {
+        if !shaped {
+            m
+        } else if m < 0.0 {
+            -m * m / scale
+        } else {
+            m.min(scale)
+        }
+    };
+    let (mut ma, mut mb) = (shape(ma), shape(mb));
+    let mut x = a;
+    for j in 1..points {
+        let t = (ma / (ma - mb)).clamp(KINK_STEP_MIN, 1.0 - KINK_STEP_MIN);
+        x = a + (b - a) * t;
+        let mx = shape(node_at(x, true).1);
+        if mx.is_nan() {
+            break;
+        }
+        if (mx > 0.0) == (ma > 0.0) {
+            (a, ma) = (x, mx);
+        } else {
+            (b, mb) = (x, mx);
+        }
+        if j + 1 == points {
+            x = a + (b - a) * ma / (ma - mb);
+        }
+    }
+    let near = if x - lo <= hi - x { lo } else { hi };
+    near + smooth_step((x - near).abs() / band) * (x - near)
+}
 
 /// The interior nodes of the 5-point Lobatto rule on the panel of midpoint
 /// `m` and half-width `hw`: m, m − hw·√(3/7), m + hw·√(3/7).
@@ -683,6 +787,18 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
 /// split there (fully at tol ≤ 3e-4, see `kink_share`) into two initial
 /// panels, which then need not be refined down to the kink
 /// (docs/decisions/0094).
+///
+/// Its ends' margins do not show an even number of kinks (an unloading band
+/// between them). So an initial panel to be refined (by a share of at least
+/// [`PIECES_FROM`]) whose nine nodes differ in whether their strips unload
+/// is split at each kink between two neighbouring nodes of different kind,
+/// located by regula falsi on reshaped margins ([`KINK_POINTS_INSIDE`]),
+/// pulled to the panel's end within KINK_END_BAND of the bracket there.
+/// Its pieces are decided as initial panels and are not split at kinks
+/// again; their refinement is blended with the halves' by `kink_share` and
+/// by the refinement share. Refined by halves instead, the panel's halves
+/// chased each kink and their decisions flipped between neighbouring
+/// inputs (docs/decisions/0130).
 ///
 /// Each panel is decided in two stages,
 /// each against the allowed change tol·width/π in J4, J5 and J6
@@ -741,7 +857,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
     // The integrand in φ: cos φ·(∫Zx, ∫Zy, ∫Zy·X, Y·∫Zx), the topology,
     // and with `margin` the strip's kink margin (NaN without; and for the
     // empty strips at Y = ±1).
-    let mut fm = |phi: f64, margin: bool| -> (Node, f64) {
+    let mut node_at = |phi: f64, margin: bool| -> (Node, f64) {
         let (y, cphi) = phi.sin_cos();
         if cphi <= 0.0 || phi.abs() >= FRAC_PI_2 {
             // The empty strip (Y = ±1) has the margin of a strip with no
@@ -772,36 +888,19 @@ pub(crate) fn lobatto_kronrod_in_phi(
     // changes sign, at a panel's end, where the split then lies: the result
     // stays continuous.
     let margins = split > 0.0;
-    let mut flo = fm(breaks[0], margins);
+    let mut flo = node_at(breaks[0], margins);
     for w in breaks.windows(2) {
-        let fhi = fm(w[1], margins);
+        let fhi = node_at(w[1], margins);
         if w[1] > w[0] {
             if flo.1 * fhi.1 < 0.0 {
-                let (mut a, mut ma, mut b, mut mb) = (w[0], flo.1, w[1], fhi.1);
-                let mut x = a;
-                for j in 1..KINK_POINTS {
-                    // A located point, kept KINK_STEP_MIN of the bracket
-                    // from its ends; the split (below) is not.
-                    let t = (ma / (ma - mb)).clamp(KINK_STEP_MIN, 1.0 - KINK_STEP_MIN);
-                    x = a + (b - a) * t;
-                    let mx = fm(x, true).1;
-                    if mx.is_nan() {
-                        break;
-                    }
-                    if (mx > 0.0) == (ma > 0.0) {
-                        (a, ma) = (x, mx);
-                    } else {
-                        (b, mb) = (x, mx);
-                    }
-                    if j + 1 == KINK_POINTS {
-                        x = a + (b - a) * ma / (ma - mb);
-                    }
-                }
-                // Pulled to the nearer end within KINK_END_BAND of the
-                // panel's width from it.
-                let near = if x - w[0] <= w[1] - x { w[0] } else { w[1] };
                 let band = KINK_END_BAND * (w[1] - w[0]);
-                let x = near + smooth_step((x - near).abs() / band) * (x - near);
+                let x = locate_kink(
+                    &mut node_at,
+                    (w[0], flo.1),
+                    (w[1], fhi.1),
+                    (w[0], w[1], band),
+                    (KINK_POINTS, false),
+                );
                 let end = if w[1] <= pole { w[1] } else { w[0] };
                 let x = if split < 1.0 {
                     end + split * (x - end)
@@ -810,21 +909,31 @@ pub(crate) fn lobatto_kronrod_in_phi(
                 };
                 // A split at a panel's end (a margin of exactly 0 there)
                 // leaves that panel whole: no empty panel is decided.
-                let fx = fm(x, false).0;
+                let fx = node_at(x, false).0;
                 if x > w[0] {
-                    stack.push((w[0], x, flo.0, fx, 0, 1.0, None));
+                    stack.push(Panel::initial(w[0], x, flo.0, fx, 1.0, false));
                 }
                 if w[1] > x {
-                    stack.push((x, w[1], fx, fhi.0, 0, 1.0, None));
+                    stack.push(Panel::initial(x, w[1], fx, fhi.0, 1.0, false));
                 }
             } else {
-                stack.push((w[0], w[1], flo.0, fhi.0, 0, 1.0, None));
+                stack.push(Panel::initial(w[0], w[1], flo.0, fhi.0, 1.0, false));
             }
         }
         flo = fhi;
     }
-    let mut f = |phi: f64| fm(phi, false).0;
-    while let Some((lo, hi, fl, fh, depth, weight, pair)) = stack.pop() {
+    while let Some(panel) = stack.pop() {
+        let Panel {
+            lo,
+            hi,
+            fl,
+            fh,
+            depth,
+            weight,
+            pair,
+            located,
+        } = panel;
+        let mut f = |phi: f64| node_at(phi, false).0;
         let (m, hw) = (0.5 * (lo + hi), 0.5 * (hi - lo));
         // The strips at Y = ±1 (zero width) count as any topology.
         let mut gate = Gate::default();
@@ -887,8 +996,8 @@ pub(crate) fn lobatto_kronrod_in_phi(
         let mut kv: [f64; 4] = std::array::from_fn(|i| {
             LK_ENDS.0 * ends[i] + LK_MID * fm.0[i] + LK_LOBATTO * (fa.0[i] + fb.0[i])
         });
-        for (t, wk) in LK_ADDED {
-            let v = f(m + hw * t);
+        let added: [Node; 4] = std::array::from_fn(|j| f(m + hw * LK_ADDED[j].0));
+        for ((_, wk), v) in LK_ADDED.iter().zip(&added) {
             gate.add(v.1);
             for (s, x) in kv.iter_mut().zip(v.0) {
                 *s += wk * x;
@@ -911,7 +1020,62 @@ pub(crate) fn lobatto_kronrod_in_phi(
                 total[i] += w * kv[i];
             }
         }
-        if refine > 0.0 {
+        // An initial panel to be refined whose nodes differ in whether
+        // their strips unload holds kinks its margins at the ends need not
+        // show (an unloading band between them): it is split at each kink
+        // located between neighbouring nodes (at `split` < 1 by that share
+        // of its refinement, the rest halved).
+        let mut halves = refine;
+        let pieces = split * smooth_step((refine - PIECES_FROM) / (1.0 - PIECES_FROM));
+        if pieces > 0.0 && depth == 0 && !located {
+            let at = [
+                (lo, fl),
+                (m + hw * LK_ADDED[0].0, added[0]),
+                (m - hw * LOBATTO_X, *fa),
+                (m + hw * LK_ADDED[1].0, added[1]),
+                (m, *fm),
+                (m + hw * LK_ADDED[2].0, added[2]),
+                (m + hw * LOBATTO_X, *fb),
+                (m + hw * LK_ADDED[3].0, added[3]),
+                (hi, fh),
+            ];
+            let mut cuts = [(0.0, fl); 8];
+            let mut n = 0;
+            for p in at.windows(2) {
+                let unloads = |v: &Node| v.1.0 >= 2;
+                if unloads(&p[0].1) != unloads(&p[1].1) {
+                    let ma = node_at(p[0].0, true).1;
+                    let mb = node_at(p[1].0, true).1;
+                    if ma * mb < 0.0 {
+                        // Pulled to the panel's end within KINK_END_BAND
+                        // of the bracket (at the end) from it.
+                        let band = KINK_END_BAND * (p[1].0 - p[0].0);
+                        let x = locate_kink(
+                            &mut node_at,
+                            (p[0].0, ma),
+                            (p[1].0, mb),
+                            (lo, hi, band),
+                            (KINK_POINTS_INSIDE, true),
+                        );
+                        cuts[n] = (x, node_at(x, false).0);
+                        n += 1;
+                    }
+                }
+            }
+            if n > 0 {
+                let w = weight * refine * pieces;
+                let (mut a, mut fa) = (lo, fl);
+                for &(x, fx) in cuts[..n].iter().chain(&[(hi, fh)]) {
+                    if x > a {
+                        stack.push(Panel::initial(a, x, fa, fx, w, true));
+                    }
+                    (a, fa) = (x, fx);
+                }
+                halves = refine * (1.0 - pieces);
+            }
+        }
+        if halves > 0.0 {
+            let mut f = |phi: f64| node_at(phi, false).0;
             // The halves' stage-1 strips now, for the pair check.
             let q = 0.5 * hw;
             let nl = lobatto_nodes(&mut f, lo + q, q);
@@ -933,11 +1097,21 @@ pub(crate) fn lobatto_kronrod_in_phi(
             } else {
                 1.0
             };
-            let w = weight * refine;
+            let w = weight * halves;
             known.push(nl);
             known.push(nr);
-            stack.push((lo, m, fl, *fm, depth + 1, w, Some(split)));
-            stack.push((m, hi, *fm, fh, depth + 1, w, Some(split)));
+            for (lo, hi, fl, fh) in [(lo, m, fl, *fm), (m, hi, *fm, fh)] {
+                stack.push(Panel {
+                    lo,
+                    hi,
+                    fl,
+                    fh,
+                    depth: depth + 1,
+                    weight: w,
+                    pair: Some(split),
+                    located: false,
+                });
+            }
         }
     }
     to_j(k, dx, &total)
