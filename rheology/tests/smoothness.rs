@@ -77,6 +77,35 @@ fn kink_splits_add_no_jumps() {
     }
 }
 
+/// A line of `cargo xtask ep-sets lines` at small k and small spin with the
+/// spin pole near the contact's edge (Y_p = 0.9966): (k, start J, direction).
+const EDGE_POLE_LINE: (f64, [f64; 3], [f64; 3]) = (
+    0.0767835221087056,
+    [
+        -0.09127293539849374,
+        -0.0518763556973054,
+        -0.33100845190331385,
+    ],
+    [
+        -0.6546141682323435,
+        0.22967871492819186,
+        -0.7202277269436462,
+    ],
+);
+
+/// Every second difference of 150 points 1e-4 apart along each line
+/// (k, start J, direction) at `tol` is at most tol/10.
+fn assert_lines_smooth(lines: &[(f64, [f64; 3], [f64; 3])], tol: f64) {
+    for &(k, p, d) in lines {
+        let m = max_second_difference(k, p, d, 1e-4, 150, tol);
+        println!(
+            "k = {k}, from {p:?}: max |Δ²| = {m:.2e} ({:.4}·tol)",
+            m / tol
+        );
+        assert!(m <= 0.1 * tol, "k = {k} {p:?}: {m:.3e}");
+    }
+}
+
 #[test]
 fn small_k_small_spin_lines_are_smooth() {
     // At small k and small spin the initial panels are the contact's halves
@@ -101,28 +130,9 @@ fn small_k_small_spin_lines_are_smooth() {
             ],
             [0.1261074305258227, -0.1116348000983864, -0.9857152668865224],
         ),
-        (
-            0.0767835221087056,
-            [
-                -0.09127293539849374,
-                -0.0518763556973054,
-                -0.33100845190331385,
-            ],
-            [
-                -0.6546141682323435,
-                0.22967871492819186,
-                -0.7202277269436462,
-            ],
-        ),
+        EDGE_POLE_LINE,
     ];
-    for (k, p, d) in lines {
-        let m = max_second_difference(k, p, d, 1e-4, 150, tol);
-        println!(
-            "k = {k}, from {p:?}: max |Δ²| = {m:.2e} ({:.4}·tol)",
-            m / tol
-        );
-        assert!(m <= 0.1 * tol, "k = {k} {p:?}: {m:.3e}");
-    }
+    assert_lines_smooth(&lines, tol);
 }
 
 #[test]
@@ -152,19 +162,7 @@ fn small_k_small_spin_lines_are_smooth_at_tol_1e_4() {
                 -0.025274103269377825,
             ],
         ),
-        (
-            0.0767835221087056,
-            [
-                -0.09127293539849374,
-                -0.0518763556973054,
-                -0.33100845190331385,
-            ],
-            [
-                -0.6546141682323435,
-                0.22967871492819186,
-                -0.7202277269436462,
-            ],
-        ),
+        EDGE_POLE_LINE,
         (
             0.13478600055439105,
             [
@@ -179,14 +177,7 @@ fn small_k_small_spin_lines_are_smooth_at_tol_1e_4() {
             ],
         ),
     ];
-    for (k, p, d) in lines {
-        let m = max_second_difference(k, p, d, 1e-4, 150, tol);
-        println!(
-            "k = {k}, from {p:?}: max |Δ²| = {m:.2e} ({:.4}·tol)",
-            m / tol
-        );
-        assert!(m <= 0.1 * tol, "k = {k} {p:?}: {m:.3e}");
-    }
+    assert_lines_smooth(&lines, tol);
 }
 
 #[test]

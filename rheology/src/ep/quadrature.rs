@@ -1044,6 +1044,8 @@ pub(crate) fn lobatto_kronrod_in_phi(
             for p in at.windows(2) {
                 let unloads = |v: &Node| v.1.0 >= 2;
                 if unloads(&p[0].1) != unloads(&p[1].1) {
+                    // The two strips again, with their margins: margins at
+                    // every node would cost more (docs/decisions/0123).
                     let ma = node_at(p[0].0, true).1;
                     let mb = node_at(p[1].0, true).1;
                     if ma * mb < 0.0 {
