@@ -774,6 +774,97 @@ fn lobatto5(hw: f64, ends: &[f64; 4], [fm, fa, fb]: &[Node; 3]) -> [f64; 4] {
     })
 }
 
+/// The initial panels between `breaks` onto `stack`, each split where a
+/// kink (an unloading appearing or vanishing) is located by regula falsi on
+/// the kink margins of its ends (KINK_POINTS strips, the last the split; at
+/// `split` < 1 the split lies that share of the way from the panel's end
+/// nearer the pole's strip `pole` to it; within KINK_END_BAND of a panel's
+/// end it is pulled to that end). A split appears or vanishes where a
+/// margin changes sign, at a panel's end, where the split then lies: the
+/// result stays continuous. At `split` = 0 no margins are computed.
+fn initial_panels(
+    breaks: &[f64],
+    (split, pole): (f64, f64),
+    node_at: &mut impl FnMut(f64, bool) -> (Node, f64),
+    stack: &mut Vec<Panel>,
+) {
+    let margins = split > 0.0;
+    let mut flo = node_at(breaks[0], margins);
+    for w in breaks.windows(2) {
+        let fhi = node_at(w[1], margins);
+        if w[1] > w[0] {
+            if flo.1 * fhi.1 < 0.0 {
+                let band = KINK_END_BAND * (w[1] - w[0]);
+                let x = locate_kink(
+                    node_at,
+                    (w[0], flo.1),
+                    (w[1], fhi.1),
+                    (w[0], w[1], band),
+                    (KINK_POINTS, false),
+                );
+                let end = if w[1] <= pole { w[1] } else { w[0] };
+                let x = if split < 1.0 {
+                    end + split * (x - end)
+                } else {
+                    x
+                };
+                // A split at a panel's end (a margin of exactly 0 there)
+                // leaves that panel whole: no empty panel is decided.
+                let fx = node_at(x, false).0;
+                if x > w[0] {
+                    stack.push(Panel::initial(w[0], x, flo.0, fx, 1.0, false));
+                }
+                if w[1] > x {
+                    stack.push(Panel::initial(x, w[1], fx, fhi.0, 1.0, false));
+                }
+            } else {
+                stack.push(Panel::initial(w[0], w[1], flo.0, fhi.0, 1.0, false));
+            }
+        }
+        flo = fhi;
+    }
+}
+
+/// The kinks between the neighbouring nodes `at` (φ and node, in order)
+/// of a panel whose strips differ in whether they unload: at each pair of
+/// neighbours of different kind whose kink margins (computed again here)
+/// differ in sign, located by regula falsi on reshaped margins
+/// ([`KINK_POINTS_INSIDE`]), pulled to the panel's end within
+/// KINK_END_BAND of the bracket there. The located points with their nodes,
+/// and how many there are.
+fn node_kinks(
+    at: &[(f64, Node); 9],
+    node_at: &mut impl FnMut(f64, bool) -> (Node, f64),
+) -> ([(f64, Node); 8], usize) {
+    let (lo, hi) = (at[0].0, at[8].0);
+    let mut cuts = [(0.0, at[0].1); 8];
+    let mut n = 0;
+    for p in at.windows(2) {
+        let unloads = |v: &Node| v.1.0 >= 2;
+        if unloads(&p[0].1) != unloads(&p[1].1) {
+            // The two strips again, with their margins: margins at every
+            // node would cost more (docs/decisions/0123, 0131).
+            let ma = node_at(p[0].0, true).1;
+            let mb = node_at(p[1].0, true).1;
+            if ma * mb < 0.0 {
+                // Pulled to the panel's end within KINK_END_BAND of the
+                // bracket (at the end) from it.
+                let band = KINK_END_BAND * (p[1].0 - p[0].0);
+                let x = locate_kink(
+                    node_at,
+                    (p[0].0, ma),
+                    (p[1].0, mb),
+                    (lo, hi, band),
+                    (KINK_POINTS_INSIDE, true),
+                );
+                cuts[n] = (x, node_at(x, false).0);
+                n += 1;
+            }
+        }
+    }
+    (cuts, n)
+}
+
 /// Adaptive Lobatto–Kronrod panels in φ (Y = sin φ) from the sorted edges
 /// `breaks` (from −π/2 to π/2, one of them `pole`, the spin pole's strip);
 /// `strip(Y, margin)` gives a strip's (∫Zx, ∫Zy, ∫Zy·X), its flow topology
@@ -879,49 +970,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
     // Interior Lobatto nodes of the halves on `stack` that have them (in
     // the same order: a half's are on top when it is taken).
     let mut known: Vec<[Node; 3]> = Vec::with_capacity(16);
-    // The initial panels, each split where a kink (an unloading appearing
-    // or vanishing) is located by regula falsi on the kink margins of its
-    // ends (KINK_POINTS strips, the last the split; at `split` < 1 the
-    // split lies that share of the way from the panel's end nearer the
-    // pole's strip to it; within KINK_END_BAND of a panel's end it is
-    // pulled to that end). A split appears or vanishes where a margin
-    // changes sign, at a panel's end, where the split then lies: the result
-    // stays continuous.
-    let margins = split > 0.0;
-    let mut flo = node_at(breaks[0], margins);
-    for w in breaks.windows(2) {
-        let fhi = node_at(w[1], margins);
-        if w[1] > w[0] {
-            if flo.1 * fhi.1 < 0.0 {
-                let band = KINK_END_BAND * (w[1] - w[0]);
-                let x = locate_kink(
-                    &mut node_at,
-                    (w[0], flo.1),
-                    (w[1], fhi.1),
-                    (w[0], w[1], band),
-                    (KINK_POINTS, false),
-                );
-                let end = if w[1] <= pole { w[1] } else { w[0] };
-                let x = if split < 1.0 {
-                    end + split * (x - end)
-                } else {
-                    x
-                };
-                // A split at a panel's end (a margin of exactly 0 there)
-                // leaves that panel whole: no empty panel is decided.
-                let fx = node_at(x, false).0;
-                if x > w[0] {
-                    stack.push(Panel::initial(w[0], x, flo.0, fx, 1.0, false));
-                }
-                if w[1] > x {
-                    stack.push(Panel::initial(x, w[1], fx, fhi.0, 1.0, false));
-                }
-            } else {
-                stack.push(Panel::initial(w[0], w[1], flo.0, fhi.0, 1.0, false));
-            }
-        }
-        flo = fhi;
-    }
+    initial_panels(breaks, (split, pole), &mut node_at, &mut stack);
     while let Some(panel) = stack.pop() {
         let Panel {
             lo,
@@ -1039,31 +1088,7 @@ pub(crate) fn lobatto_kronrod_in_phi(
                 (m + hw * LK_ADDED[3].0, added[3]),
                 (hi, fh),
             ];
-            let mut cuts = [(0.0, fl); 8];
-            let mut n = 0;
-            for p in at.windows(2) {
-                let unloads = |v: &Node| v.1.0 >= 2;
-                if unloads(&p[0].1) != unloads(&p[1].1) {
-                    // The two strips again, with their margins: margins at
-                    // every node would cost more (docs/decisions/0123).
-                    let ma = node_at(p[0].0, true).1;
-                    let mb = node_at(p[1].0, true).1;
-                    if ma * mb < 0.0 {
-                        // Pulled to the panel's end within KINK_END_BAND
-                        // of the bracket (at the end) from it.
-                        let band = KINK_END_BAND * (p[1].0 - p[0].0);
-                        let x = locate_kink(
-                            &mut node_at,
-                            (p[0].0, ma),
-                            (p[1].0, mb),
-                            (lo, hi, band),
-                            (KINK_POINTS_INSIDE, true),
-                        );
-                        cuts[n] = (x, node_at(x, false).0);
-                        n += 1;
-                    }
-                }
-            }
+            let (cuts, n) = node_kinks(&at, &mut node_at);
             if n > 0 {
                 let w = weight * refine * pieces;
                 let (mut a, mut fa) = (lo, fl);
