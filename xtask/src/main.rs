@@ -37,8 +37,9 @@ commands:
                                   plastic steps by kind per evaluation
   prof-visco [CASE [TOL [REPS [old|gauss]]]]
                                   the same for the viscoelastic model: CASE m h x l e g
-                                  (prof_visco.rs); `old` = the former fixed-grid scheme,
-                                  `gauss` = the former Gauss-Legendre panel rule; with
+                                  or k,J1,J2,J3,gy,D,Z0 (prof_visco.rs); `old` = the
+                                  former fixed-grid scheme, `gauss` = the former
+                                  Gauss-Legendre panel rule; with
                                   --features step-counts also its strips and steps
   ir [ep|visco] [TOL [CASE...]]   instructions per cold evaluation of the bench cases
                                   (default all, TOL 1e-3): prof/prof-visco under callgrind

@@ -1,5 +1,6 @@
 //! Callgrind driver for the viscoelastic benches: `prof-visco CASE TOL REPS
-//! [old|gauss]`; instructions per evaluation = (Ir(REPS=3) − Ir(1))/2. `old`
+//! [old|gauss]` (CASE a letter of the bench set or `k,J1,J2,J3,gy,D,Z0`);
+//! instructions per evaluation = (Ir(REPS=3) − Ir(1))/2. `old`
 //! runs the former fixed-grid scheme with its former resolution at TOL
 //! (`reference::viscoelastic`: 2·⌊max(1, −log10 TOL − 1)⌋ panels of 8
 //! points, ⌈20·10^(−log10(TOL)/2)⌉ uniform steps per strip), `gauss` the
@@ -12,6 +13,26 @@ use crate::arg;
 use traction_rheology::{Accuracy, Inputs, Model, Resolution, evaluate, reference};
 use traction_testkit::bench_cases::VISCOELASTIC;
 
+/// A bench case by its letter, or `k,J1,J2,J3,gy,D,Z0`: (k, J, gy, D, Z0).
+fn visco_case(case: &str) -> Result<(f64, [f64; 3], f64, f64, f64), String> {
+    if case.contains(',') {
+        let v: Vec<f64> = case
+            .split(',')
+            .map(|x| x.trim().parse::<f64>())
+            .collect::<Result<_, _>>()
+            .map_err(|e| format!("case `{case}`: {e}"))?;
+        return match v[..] {
+            [k, j1, j2, j3, gy, d, z0] => Ok((k, [j1, j2, j3], gy, d, z0)),
+            _ => Err(format!("case `{case}`: expected k,J1,J2,J3,gy,D,Z0")),
+        };
+    }
+    VISCOELASTIC
+        .iter()
+        .find(|c| c.letter == case)
+        .map(|c| (c.k, c.j, c.gy, c.deborah, c.z0))
+        .ok_or_else(|| format!("unknown case `{case}`"))
+}
+
 /// Runs the driver with the command line's arguments after `prof-visco`.
 pub fn run(a: &[String]) -> Result<(), String> {
     let case = a.first().map(|s| s.as_str()).unwrap_or("m");
@@ -21,13 +42,9 @@ pub fn run(a: &[String]) -> Result<(), String> {
     if let Some(v) = variant.filter(|v| *v != "old" && *v != "gauss") {
         return Err(format!("unknown variant `{v}` (old, gauss)"));
     }
-    let c = VISCOELASTIC
-        .iter()
-        .find(|c| c.letter == case)
-        .ok_or_else(|| format!("unknown case `{case}`"))?;
-    let (deborah, z0) = (c.deborah, c.z0);
-    let inp = Inputs::new(c.k, c.j[0], c.j[1], c.j[2])
-        .and_then(|i| i.with_stiffness_ratio(c.gy))
+    let (k, j, gy, deborah, z0) = visco_case(case)?;
+    let inp = Inputs::new(k, j[0], j[1], j[2])
+        .and_then(|i| i.with_stiffness_ratio(gy))
         .map_err(|e| e.to_string())?;
     let acc = Accuracy::new(tol).map_err(|e| e.to_string())?;
     let lt = -tol.log10();
