@@ -24,8 +24,19 @@ const MAX_SWITCH: usize = 24;
 /// counts as empty (`strip_sums_topology`).
 const EMPTY_CAP: f64 = 1e-9;
 /// Largest number of times per strip an interior step whose entry met an
-/// empty cap is retaken at half its length.
+/// empty cap, or whose interpolated entry the step does not reach
+/// ([`ENTRY_GAP`]), is retaken at half its length.
 const ENTRY_RETRIES: usize = 8;
+/// Largest |(|Z| − L)|/L at the end of the interior step taken up to a cap
+/// entry located on a longer step's Hermite interpolant: beyond it the
+/// interpolant, not the stress, reached the cap, and the step is retaken
+/// at half its length. At k = 0.0206, J = (0, 25.1, 1e4), gy = 0.9,
+/// D = 0.0078, Z0 = 0.030 and tol 1e-2 an interior step of 0.47 rad ended
+/// at the outlet, its interpolant met the cap at its start where |Z| was
+/// 0.63·L, and the stress then stayed on the cap to the outlet: strips
+/// off by 20 times their allowed error, 19 000 of them per evaluation
+/// (0.7 s) and J6 3.4·tol off (docs/decisions/0132).
+const ENTRY_GAP: f64 = 0.01;
 /// Steps per strip after which steps are accepted regardless of the error
 /// estimate: guarantees termination at extreme inputs (where the tolerance
 /// is then not held).
@@ -228,6 +239,22 @@ pub(super) fn parabola_min([(s0, d0), (s1, d1), (s2, d2)]: [(f64, f64); 3]) -> f
     v.clamp(0.0, d1)
 }
 
+/// Whether the interior step of length `hs` from `p` (stress `z`) ends on
+/// the cap, to ENTRY_GAP of L: the check of a cap entry located on the
+/// Hermite interpolant of a longer step.
+fn entry_holds(
+    inter: &Interior,
+    p: Pt,
+    hs: f64,
+    z: &[f64; 2],
+    (ev0, jac): (&Eval<2>, &Jac<2>),
+) -> bool {
+    let e = ros_step(inter, p, hs, z, ev0, jac);
+    let r = (e.u[0] * e.u[0] + e.u[1] * e.u[1]).sqrt();
+    let l = 1.5 * inter.0.c * e.p1.sn.max(0.0);
+    (r - l).abs() <= ENTRY_GAP * l
+}
+
 #[allow(clippy::needless_range_loop)]
 fn strip_sums_with(st: &VStrip, atol: f64, with_margin: bool) -> ([f64; 3], u32, f64) {
     let mut q = [0.0; 3];
@@ -339,6 +366,24 @@ fn strip_sums_with(st: &VStrip, atol: f64, with_margin: bool) -> ([f64; 3], u32,
                         // random cases 0.60 / 0.51 → 0.59 / 0.54 at tol
                         // 1e-3 / 1e-4 (docs/decisions/0076).
                         let hs = t * h1;
+                        // With gy ≠ 1 the interpolated entry is checked
+                        // against the step taken up to it: on a long stiff
+                        // step the Hermite interpolant of Z can bulge out
+                        // to the cap where the stress stays well inside it
+                        // (the step is then retaken at half its length).
+                        // With gy = 1 such an entry meets an empty cap,
+                        // which retakes the step below.
+                        if st.gy != 1.0
+                            && retries < ENTRY_RETRIES
+                            && !entry_holds(&inter, p, hs, &z, (&ev0, &jac))
+                        {
+                            p = p_start;
+                            q = q_start;
+                            mode = Mode::Interior(z);
+                            retries += 1;
+                            h = 0.5 * h1;
+                            continue;
+                        }
                         let mut dq = [0.0; 3];
                         for i in 0..3 {
                             dq[i] = hermite(0.0, ev0.fq[i], stp.dq[i], ev1.fq[i], h1, t);
